@@ -1,0 +1,8 @@
+/* OctoProx public API: include this one header. */
+#ifndef OCTOPROX_OCTOPROX_H
+#define OCTOPROX_OCTOPROX_H
+
+#include "common.h"
+#include "octree.h"
+
+#endif /* OCTOPROX_OCTOPROX_H */
