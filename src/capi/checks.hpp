@@ -1,0 +1,67 @@
+// Argument checks shared by the shims: versioned structs, pointers, finite
+// numbers and poses.  Each throws ApiError(OPX_ERROR_*) with a message that
+// names the argument; the guard adds the function's name.
+#pragma once
+
+#include "capi/error.hpp"
+#include "geometry/pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace octoprox::capi {
+
+inline void require_pointer(const void *pointer, const char *argument) {
+    if (pointer == nullptr) throw_invalid(format("%s is NULL", argument));
+}
+
+inline void require_finite(double value, const char *argument) {
+    if (!std::isfinite(value)) throw_invalid(format("%s is %g, not a finite number", argument, value));
+}
+
+inline void require_struct_size(uint32_t struct_size, const char *argument) {
+    if (struct_size < sizeof(uint32_t))
+        throw ApiError(OPX_ERROR_VERSION,
+                       format("%s->struct_size is %u; initialise the struct with its _INIT macro "
+                              "or _init function",
+                              argument, struct_size));
+}
+
+// Reads a caller's versioned struct over the defaults already in `out`:
+// only the fields the caller's version knows are taken.  in may be NULL
+// (defaults kept).
+template <class T>
+void read_versioned(const T *in, T &out, const char *argument) {
+    if (in == nullptr) return;
+    require_struct_size(in->struct_size, argument);
+    std::memcpy(&out, in, std::min<size_t>(in->struct_size, sizeof(T)));
+    out.struct_size = sizeof(T);
+}
+
+// Writes a result into a caller's versioned struct, no further than its
+// struct_size, which is kept.
+template <class T>
+void write_versioned(T *out, const T &value, const char *argument) {
+    require_pointer(out, argument);
+    require_struct_size(out->struct_size, argument);
+    const uint32_t caller_size = out->struct_size;
+    std::memcpy(out, &value, std::min<size_t>(caller_size, sizeof(T)));
+    out->struct_size = caller_size;
+}
+
+// The body of every opx_x_init(ptr, size): defaults up to size bytes.
+template <class T>
+void init_versioned(T *out, size_t size, const T &defaults, const char *argument) {
+    require_pointer(out, argument);
+    if (size < sizeof(uint32_t))
+        throw ApiError(OPX_ERROR_VERSION, format("size %zu is too small for %s", size, argument));
+    const size_t n = std::min(size, sizeof(T));
+    std::memcpy(out, &defaults, n);
+    out->struct_size = static_cast<uint32_t>(n);
+}
+
+// A pose from the ABI, checked: finite, non-zero quaternion (normalised).
+Pose read_pose(const opx_pose &pose, const char *argument);
+
+}  // namespace octoprox::capi

@@ -1,0 +1,51 @@
+#include "capi/error.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace octoprox::capi {
+namespace {
+// One message per thread, so concurrent queries on other threads never
+// overwrite the message a caller is about to read.
+thread_local std::string last_error_message;
+}  // namespace
+
+opx_status fail(opx_status status, const char *function, const std::string &message) {
+    try {
+        last_error_message = std::string(function) + ": " + message;
+    } catch (...) {
+        // Out of memory while reporting: keep the previous message rather
+        // than throw across the C boundary.
+    }
+    return status;
+}
+
+std::string format(const char *fmt, ...) {
+    char buffer[512];
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(buffer, sizeof buffer, fmt, args);
+    va_end(args);
+    return buffer;
+}
+
+}  // namespace octoprox::capi
+
+extern "C" OPX_API const char *opx_last_error(void) {
+    return octoprox::capi::last_error_message.c_str();
+}
+
+extern "C" OPX_API const char *opx_status_name(opx_status status) {
+    switch (status) {
+    case OPX_OK: return "OPX_OK";
+    case OPX_ERROR_INVALID_ARGUMENT: return "OPX_ERROR_INVALID_ARGUMENT";
+    case OPX_ERROR_OUT_OF_MEMORY: return "OPX_ERROR_OUT_OF_MEMORY";
+    case OPX_ERROR_VERSION: return "OPX_ERROR_VERSION";
+    case OPX_ERROR_BUFFER_TOO_SMALL: return "OPX_ERROR_BUFFER_TOO_SMALL";
+    case OPX_ERROR_UNSUPPORTED: return "OPX_ERROR_UNSUPPORTED";
+    case OPX_ERROR_IO: return "OPX_ERROR_IO";
+    case OPX_ERROR_CORRUPT: return "OPX_ERROR_CORRUPT";
+    case OPX_ERROR_INTERNAL: return "OPX_ERROR_INTERNAL";
+    default: return "OPX_UNKNOWN_STATUS";
+    }
+}

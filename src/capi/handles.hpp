@@ -1,0 +1,22 @@
+// The opaque handles of the C ABI and their C++ contents.
+#pragma once
+
+#include "octree/sensor_octree.hpp"
+
+#include <octoprox/octree.h>
+
+#include <memory>
+
+struct opx_octree {
+    std::unique_ptr<octoprox::SensorOctree> tree;
+};
+
+namespace octoprox::capi {
+
+// Conversions between the ABI's option struct and the internal parameters.
+OctreeParams params_from_options(const opx_octree_options &options);
+opx_octree_options options_from_params(const OctreeParams &params);
+// Caller's options (NULL: defaults) read, versioned and validated.
+OctreeParams read_octree_options(const opx_octree_options *options, const char *argument);
+
+}  // namespace octoprox::capi

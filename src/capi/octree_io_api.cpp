@@ -1,0 +1,135 @@
+// C shims: loading and saving OctoMap files, memory images and messages.
+#include "capi/checks.hpp"
+#include "capi/handles.hpp"
+#include "octree/octomap_io.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+std::string read_whole_file(const char *path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ApiError(OPX_ERROR_IO, format("cannot open \"%s\": %s", path, std::strerror(errno)));
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (in.bad()) throw ApiError(OPX_ERROR_IO, format("cannot read \"%s\"", path));
+    return bytes.str();
+}
+
+bool ends_with(const std::string &text, const char *suffix) {
+    const size_t n = std::strlen(suffix);
+    return text.size() >= n && text.compare(text.size() - n, n, suffix) == 0;
+}
+
+MapFormat save_format(int32_t format, const char *path) {
+    if (format == OPX_FORMAT_BT) return MapFormat::kBinary;
+    if (format == OPX_FORMAT_OT) return MapFormat::kFull;
+    if (format != OPX_FORMAT_AUTO)
+        throw_invalid(capi::format("format %d is not OPX_FORMAT_AUTO, _BT or _OT", format));
+    if (path == nullptr) return MapFormat::kBinary;
+    const std::string name(path);
+    if (ends_with(name, ".bt")) return MapFormat::kBinary;
+    if (ends_with(name, ".ot")) return MapFormat::kFull;
+    throw_invalid(capi::format("path \"%s\" ends neither in .bt nor in .ot; give the format", path));
+}
+
+// Writes next to the target and renames, so a failed save never leaves a
+// half-written map where a good one was.
+void write_file_atomically(const char *path, const std::string &bytes) {
+    const std::string temporary = std::string(path) + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) throw ApiError(OPX_ERROR_IO, format("cannot create \"%s\": %s", temporary.c_str(), std::strerror(errno)));
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        if (!out.flush()) throw ApiError(OPX_ERROR_IO, format("cannot write \"%s\"", temporary.c_str()));
+    }
+    if (std::rename(temporary.c_str(), path) != 0) {
+        std::remove(temporary.c_str());
+        throw ApiError(OPX_ERROR_IO, format("cannot rename onto \"%s\": %s", path, std::strerror(errno)));
+    }
+}
+
+opx_status hand_out(std::unique_ptr<SensorOctree> tree, opx_octree **out) {
+    auto handle = std::make_unique<opx_octree>();
+    handle->tree = std::move(tree);
+    *out = handle.release();
+    return OPX_OK;
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_options *options,
+                                        opx_octree **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(out, "out");
+        require_pointer(path, "path");
+        const OctreeParams params = read_octree_options(options, "options");
+        return hand_out(read_map_file_bytes(read_whole_file(path), params), out);
+    });
+}
+
+OPX_API opx_status opx_octree_load_memory(const void *data, size_t size,
+                                          const opx_octree_options *options, opx_octree **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(out, "out");
+        if (size > 0) require_pointer(data, "data");
+        const OctreeParams params = read_octree_options(options, "options");
+        const std::string bytes(static_cast<const char *>(data), size);
+        return hand_out(read_map_file_bytes(bytes, params), out);
+    });
+}
+
+OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_t binary,
+                                           double resolution, const opx_octree_options *options,
+                                           opx_octree **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(out, "out");
+        if (size > 0) require_pointer(data, "data");
+        if (!(resolution > 0.0) || !std::isfinite(resolution))
+            throw_invalid(format("resolution is %g; a positive cell edge in metres is needed", resolution));
+        const OctreeParams params = read_octree_options(options, "options");
+        const std::string body(static_cast<const char *>(data), size);
+        const MapFormat format = binary ? MapFormat::kBinary : MapFormat::kFull;
+        return hand_out(read_map_body(body, format, resolution, params), out);
+    });
+}
+
+OPX_API opx_status opx_octree_save_file(const opx_octree *tree, const char *path, int32_t format) {
+    return guard(__func__, [&] {
+        require_pointer(tree, "tree");
+        require_pointer(path, "path");
+        write_file_atomically(path, write_map_file_bytes(*tree->tree, save_format(format, path)));
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_octree_save_memory(const opx_octree *tree, int32_t format, void *buffer,
+                                          size_t capacity, size_t *out_size) {
+    return guard(__func__, [&] {
+        require_pointer(tree, "tree");
+        require_pointer(out_size, "out_size");
+        if (capacity > 0) require_pointer(buffer, "buffer");
+        const std::string bytes = write_map_file_bytes(*tree->tree, save_format(format, nullptr));
+        *out_size = bytes.size();
+        if (bytes.size() > capacity)
+            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,
+                           capi::format("buffer holds %zu bytes, %zu are needed (see *out_size)", capacity,
+                                  bytes.size()));
+        std::memcpy(buffer, bytes.data(), bytes.size());
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"

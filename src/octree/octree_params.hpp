@@ -1,0 +1,24 @@
+// Parameters of a sensor octree (mirrors opx_octree_options).
+#pragma once
+
+#include <cmath>
+
+namespace octoprox {
+
+struct OctreeParams {
+    double resolution = 0.05;
+    double prob_hit = 0.7;
+    double prob_miss = 0.4;
+    double clamp_min = 0.1192;
+    double clamp_max = 0.971;
+    double occupied_threshold = 0.5;
+    double free_threshold = 0.5;
+};
+
+// Throws ApiError(INVALID_ARGUMENT) naming the first bad field of `argument`.
+void validate_params(const OctreeParams &params, const char *argument);
+
+inline double log_odds(double probability) { return std::log(probability / (1.0 - probability)); }
+inline double probability_from_log_odds(double log_odds) { return 1.0 / (1.0 + std::exp(-log_odds)); }
+
+}  // namespace octoprox

@@ -1,0 +1,60 @@
+// The engines' read-only view of an occupancy octree.
+//
+// Query engines see the map only through this class: nodes as opaque
+// references, children by index, log-odds per node (an inner node holds the
+// maximum of its children, which makes pruning by threshold safe), and cell
+// geometry from integer keys.  The storage behind it is OctoMap's OcTree
+// today; replacing it means rewriting octree_view_octomap.inl only.
+#pragma once
+
+#include <cstdint>
+
+namespace octoprox {
+
+// Depth of the finest cells; the root cube is 2^kTreeDepth cells wide.
+constexpr int kTreeDepth = 16;
+constexpr int32_t kKeyCenter = 1 << (kTreeDepth - 1);
+
+// A cube of the tree: the integer key of its minimum corner at the finest
+// depth, and its depth (0 = root).  Geometry follows exactly OctoMap's
+// keyToCoord, so centers match OctoMap's bit for bit.
+struct CellKey {
+    uint16_t key[3] = {0, 0, 0};
+    int depth = 0;
+
+    int32_t width_in_cells() const { return 1 << (kTreeDepth - depth); }
+    // Child i: x = bit 0, y = bit 1, z = bit 2 (OctoMap's order).
+    CellKey child(int i) const {
+        CellKey c;
+        const int32_t half = width_in_cells() / 2;
+        for (int axis = 0; axis < 3; ++axis)
+            c.key[axis] = static_cast<uint16_t>(key[axis] + (((i >> axis) & 1) ? half : 0));
+        c.depth = depth + 1;
+        return c;
+    }
+    double center(int axis, double resolution) const {
+        return (key[axis] - kKeyCenter + 0.5 * width_in_cells()) * resolution;
+    }
+    double size(double resolution) const { return width_in_cells() * resolution; }
+};
+
+class OctreeView {
+public:
+    using NodeRef = const void *;
+
+    explicit OctreeView(const void *octomap_tree);
+
+    double resolution() const { return resolution_; }
+    NodeRef root() const;                       // nullptr when the map is empty
+    bool has_children(NodeRef node) const;
+    NodeRef child(NodeRef node, int index) const;  // nullptr: unknown space
+    float log_odds(NodeRef node) const;
+
+private:
+    const void *tree_;
+    double resolution_;
+};
+
+}  // namespace octoprox
+
+#include "octree/octree_view_octomap.inl"

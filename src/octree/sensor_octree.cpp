@@ -1,0 +1,140 @@
+#include "octree/sensor_octree.hpp"
+
+#include "capi/error.hpp"
+#include "octree/traverse.hpp"
+
+#include <octomap/OcTree.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace octoprox {
+
+void validate_params(const OctreeParams &p, const char *argument) {
+    using capi::format;
+    auto check_probability = [&](double value, const char *field) {
+        if (!(value > 0.0 && value < 1.0))
+            throw_invalid(format("%s.%s is %g; a probability strictly between 0 and 1 is needed",
+                                 argument, field, value));
+    };
+    if (!(p.resolution > 0.0) || !std::isfinite(p.resolution))
+        throw_invalid(format("%s.resolution is %g; a positive cell edge in metres is needed",
+                             argument, p.resolution));
+    check_probability(p.prob_hit, "prob_hit");
+    check_probability(p.prob_miss, "prob_miss");
+    check_probability(p.clamp_min, "clamp_min");
+    check_probability(p.clamp_max, "clamp_max");
+    check_probability(p.occupied_threshold, "occupied_threshold");
+    check_probability(p.free_threshold, "free_threshold");
+    if (!(p.prob_hit > 0.5))
+        throw_invalid(format("%s.prob_hit is %g; a hit must raise occupancy (> 0.5)", argument,
+                             p.prob_hit));
+    if (!(p.prob_miss < 0.5))
+        throw_invalid(format("%s.prob_miss is %g; a miss must lower occupancy (< 0.5)", argument,
+                             p.prob_miss));
+    if (!(p.clamp_min < p.clamp_max))
+        throw_invalid(format("%s.clamp_min %g is not below clamp_max %g", argument, p.clamp_min,
+                             p.clamp_max));
+    if (!(p.free_threshold <= p.occupied_threshold))
+        throw_invalid(format("%s.free_threshold %g is above occupied_threshold %g", argument,
+                             p.free_threshold, p.occupied_threshold));
+}
+
+Vec3 PointSource::read(size_t index) const {
+    const unsigned char *at = data + index * stride;
+    if (is_double) {
+        double xyz[3];
+        std::memcpy(xyz, at, sizeof xyz);
+        return Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    float xyz[3];
+    std::memcpy(xyz, at, sizeof xyz);
+    return Vec3(xyz[0], xyz[1], xyz[2]);
+}
+
+SensorOctree::SensorOctree(const OctreeParams &params)
+    : params_(params), tree_(std::make_unique<octomap::OcTree>(params.resolution)) {
+    apply_params();
+}
+
+SensorOctree::SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::OcTree> tree)
+    : params_(params), tree_(std::move(tree)) {
+    apply_params();
+}
+
+SensorOctree::~SensorOctree() = default;
+
+void SensorOctree::apply_params() {
+    tree_->setProbHit(params_.prob_hit);
+    tree_->setProbMiss(params_.prob_miss);
+    tree_->setClampingThresMin(params_.clamp_min);
+    tree_->setClampingThresMax(params_.clamp_max);
+    tree_->setOccupancyThres(params_.occupied_threshold);
+    occupied_log_odds_ = static_cast<float>(log_odds(params_.occupied_threshold));
+    free_log_odds_ = static_cast<float>(log_odds(params_.free_threshold));
+}
+
+bool SensorOctree::contains(const Vec3 &point) const {
+    octomap::OcTreeKey key;
+    return tree_->coordToKeyChecked(point.x(), point.y(), point.z(), key);
+}
+
+void SensorOctree::clear() { tree_->clear(); }
+
+// Walks from the root towards the point's finest cell; stops at the leaf
+// holding it, or at the first missing child (unknown space).
+CellInfo SensorOctree::classify(const Vec3 &point) const {
+    const octomap::OcTreeKey key = tree_->coordToKey(point.x(), point.y(), point.z());
+    const OctreeView tree = view();
+    CellKey cell;
+    CellInfo info;
+    OctreeView::NodeRef node = tree.root();
+    while (node != nullptr && tree.has_children(node)) {
+        const int shift = kTreeDepth - 1 - cell.depth;
+        const int index = ((key[0] >> shift) & 1) | (((key[1] >> shift) & 1) << 1) |
+                          (((key[2] >> shift) & 1) << 2);
+        cell = cell.child(index);
+        node = tree.child(node, index);
+    }
+    if (node != nullptr) {
+        info.cell_class = classify_log_odds(tree.log_odds(node));
+        info.probability = probability_from_log_odds(tree.log_odds(node));
+    }
+    for (int axis = 0; axis < 3; ++axis) info.center[axis] = cell.center(axis, params_.resolution);
+    info.size = cell.size(params_.resolution);
+    info.depth = cell.depth;
+    return info;
+}
+
+namespace {
+void grow_bounds(double lo[3], double hi[3], bool &has, const CellKey &cell, double resolution) {
+    const double half = 0.5 * cell.size(resolution);
+    for (int axis = 0; axis < 3; ++axis) {
+        const double c = cell.center(axis, resolution);
+        lo[axis] = has ? std::min(lo[axis], c - half) : c - half;
+        hi[axis] = has ? std::max(hi[axis], c + half) : c + half;
+    }
+    has = true;
+}
+}  // namespace
+
+TreeStats SensorOctree::stats() const {
+    TreeStats s;
+    const OctreeView tree = view();
+    const double res = params_.resolution;
+    if (OctreeView::NodeRef root = tree.root()) {
+        traverse_nodes(
+            tree, root, CellKey{},
+            [&](OctreeView::NodeRef node, const CellKey &cell) {
+                const int cls = classify_log_odds(tree.log_odds(node));
+                ++s.leaves[cls];
+                grow_bounds(s.known_min, s.known_max, s.has_known, cell, res);
+                if (cls == kOccupied) grow_bounds(s.occupied_min, s.occupied_max, s.has_occupied, cell, res);
+            },
+            [&](OctreeView::NodeRef, const CellKey &) { ++s.inner_nodes; });
+    }
+    s.memory_bytes = tree_->memoryUsage();
+    return s;
+}
+
+}  // namespace octoprox

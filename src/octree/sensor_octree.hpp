@@ -1,0 +1,92 @@
+// The sensor octree behind an opx_octree handle: OctoMap's OcTree with our
+// parameters, the cell classes of the paper (occupied / uncertain / free /
+// unknown) and sensor-frame insertion.
+#pragma once
+
+#include "geometry/pose.hpp"
+#include "octree/octree_params.hpp"
+#include "octree/octree_view.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+namespace octomap { class OcTree; }
+
+namespace octoprox {
+
+enum CellClass : int { kUnknown = 0, kFree = 1, kUncertain = 2, kOccupied = 3 };
+
+// Strided points of 3 float32 or float64 coordinates, read unaligned.
+struct PointSource {
+    const unsigned char *data = nullptr;
+    size_t count = 0;
+    size_t stride = 0;  // bytes, never 0 here
+    bool is_double = false;
+
+    Vec3 read(size_t index) const;
+};
+
+struct InsertSettings {
+    bool raycast = true;
+    Pose sensor_pose;
+    double max_range = -1.0;  // <= 0 or infinite: no limit
+};
+
+struct InsertCounts {
+    uint64_t used = 0, nonfinite = 0, out_of_range = 0, outside_map = 0;
+    uint64_t cells_hit = 0, cells_missed = 0;
+};
+
+struct CellInfo {
+    int cell_class = kUnknown;
+    double probability = 0.5;
+    double center[3] = {0, 0, 0};
+    double size = 0;
+    int depth = 0;
+};
+
+struct TreeStats {
+    uint64_t leaves[4] = {0, 0, 0, 0};  // by CellClass
+    uint64_t inner_nodes = 0;
+    uint64_t memory_bytes = 0;
+    bool has_occupied = false, has_known = false;
+    double occupied_min[3] = {0, 0, 0}, occupied_max[3] = {0, 0, 0};
+    double known_min[3] = {0, 0, 0}, known_max[3] = {0, 0, 0};
+};
+
+class SensorOctree {
+public:
+    explicit SensorOctree(const OctreeParams &params);
+    // Adopts a tree read from a file; params.resolution must be its resolution.
+    SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::OcTree> tree);
+    ~SensorOctree();
+
+    const OctreeParams &params() const { return params_; }
+    OctreeView view() const { return OctreeView(tree_.get()); }
+    const octomap::OcTree &octomap_tree() const { return *tree_; }
+
+    int classify_log_odds(float log_odds) const {
+        if (log_odds >= occupied_log_odds_) return kOccupied;
+        return log_odds < free_log_odds_ ? kFree : kUncertain;
+    }
+    // True when the point (map frame) lies inside the addressable cube.
+    bool contains(const Vec3 &point) const;
+
+    InsertCounts insert(const PointSource &points, const InsertSettings &settings);
+    CellInfo classify(const Vec3 &point) const;  // point inside the cube
+    TreeStats stats() const;
+    void clear();
+
+private:
+    void apply_params();
+
+    OctreeParams params_;
+    std::unique_ptr<octomap::OcTree> tree_;
+    // Thresholds as float log-odds, compared with the stored float log-odds
+    // exactly as OctoMap's isNodeOccupied does.
+    float occupied_log_odds_ = 0.0f;
+    float free_log_odds_ = 0.0f;
+};
+
+}  // namespace octoprox
