@@ -4,5 +4,7 @@
 
 #include "common.h"
 #include "octree.h"
+#include "linkset.h"
+#include "query.h"
 
 #endif /* OCTOPROX_OCTOPROX_H */

@@ -2,13 +2,26 @@
 #pragma once
 
 #include "octree/sensor_octree.hpp"
+#include "query/direct_collide.hpp"
+#include "robot/linkset.hpp"
 
 #include <octoprox/octree.h>
+#include <octoprox/query.h>
 
 #include <memory>
 
 struct opx_octree {
     std::unique_ptr<octoprox::SensorOctree> tree;
+};
+
+struct opx_linkset {
+    octoprox::LinkSet links;
+};
+
+struct opx_query {
+    int32_t engine = OPX_ENGINE_DIRECT;
+    octoprox::DirectCollider direct;
+    std::vector<octoprox::Contact> contacts;  // of the last collision query
 };
 
 namespace octoprox::capi {

@@ -1,0 +1,114 @@
+/*
+ * opx_linkset: a robot as a set of links, each with shapes fixed in the link
+ * frame, a padding, and a pose in the map frame.
+ *
+ * Shape conventions (all in metres, in the SHAPE frame, which sits at
+ * opx_shape.pose in the link frame):
+ *   sphere    radius, centred at the shape origin
+ *   box       size[3]: FULL edge lengths along x, y, z (as URDF and FCL),
+ *             centred at the origin
+ *   cylinder  radius and FULL length along z, centred at the origin (URDF)
+ *   capsule   radius and length of the cylindrical part along z (the
+ *             distance between the two sphere centres; FCL's convention),
+ *             centred at the origin
+ *   convex    the convex hull of `vertices` (solid)
+ *   mesh      triangles `indices` over `vertices` (a surface: a cell wholly
+ *             inside a closed mesh touches no triangle and is not reported,
+ *             as in FCL; use a convex hull for a solid part)
+ *
+ * Padding is a safety margin: a padded shape is the Minkowski sum of the
+ * shape with a ball of radius padding (exact rounding, not scaling).  A
+ * link's padding is its own plus the set's global padding.
+ *
+ * Copy semantics: the library copies vertices, indices and names; a link
+ * set is read-only while queries run on it (any number of threads may
+ * query one link set at once); changing it needs exclusive access.
+ */
+#ifndef OCTOPROX_LINKSET_H
+#define OCTOPROX_LINKSET_H
+
+#include "common.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct opx_linkset opx_linkset;
+
+#define OPX_SHAPE_SPHERE 1
+#define OPX_SHAPE_BOX 2
+#define OPX_SHAPE_CYLINDER 3
+#define OPX_SHAPE_CAPSULE 4
+#define OPX_SHAPE_CONVEX 5
+#define OPX_SHAPE_MESH 6
+
+typedef struct opx_shape {
+    uint32_t struct_size;
+    int32_t kind;        /* OPX_SHAPE_* */
+    opx_pose pose;       /* the shape frame in the link frame; identity */
+    double radius;       /* sphere, cylinder, capsule */
+    double length;       /* cylinder: full length; capsule: cylindrical part */
+    double size[3];      /* box: full edge lengths */
+    /* convex and mesh: vertex_count points of 3 doubles, vertex_stride bytes
+     * apart (0: packed), in the shape frame */
+    const double *vertices;
+    size_t vertex_count;
+    size_t vertex_stride;
+    /* mesh: triangle_count triangles of 3 vertex indices, packed */
+    const uint32_t *indices;
+    size_t triangle_count;
+} opx_shape;
+
+#define OPX_SHAPE_INIT {sizeof(opx_shape), 0, OPX_POSE_IDENTITY, 0.0, 0.0, {0.0, 0.0, 0.0}, \
+    NULL, 0, 0, NULL, 0}
+OPX_API opx_status opx_shape_init(opx_shape *shape, size_t size);
+
+OPX_API opx_status opx_linkset_create(opx_linkset **out);
+OPX_API void opx_linkset_destroy(opx_linkset *links);
+/* A deep copy (shapes, names, poses, paddings, enabled flags). */
+OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out);
+
+/* Adds a link named `name` (copied; names need not be unique, but
+ * opx_linkset_find_link returns the first) with an identity pose. */
+OPX_API opx_status opx_linkset_add_link(opx_linkset *links, const char *name,
+                                        uint32_t *out_link);
+/* Adds a shape to a link; *out_shape (may be NULL) gets its index within
+ * the link.  Meshes are built into a BVH over their triangles here, once. */
+OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link,
+                                         const opx_shape *shape, uint32_t *out_shape);
+
+OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count);
+OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link,
+                                           uint32_t *out_count);
+/* The link's name; valid until the link set changes or is destroyed. */
+OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link,
+                                         const char **out_name);
+/* The first link named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
+OPX_API opx_status opx_linkset_find_link(const opx_linkset *links, const char *name,
+                                         uint32_t *out_link);
+
+/* Paddings in metres (>= 0): global and per link. */
+OPX_API opx_status opx_linkset_set_padding(opx_linkset *links, double padding);
+OPX_API opx_status opx_linkset_set_link_padding(opx_linkset *links, uint32_t link,
+                                                double padding);
+/* Disabled links take part in no query (e.g. links the sensor cannot see,
+ * or a gripper holding an object).  All links start enabled. */
+OPX_API opx_status opx_linkset_set_link_enabled(opx_linkset *links, uint32_t link,
+                                                int32_t enabled);
+
+/*
+ * Sets the pose of every link in the MAP frame: `count` must equal the
+ * number of links; pose i is at (const char *)poses + i * stride (0:
+ * packed).  The BVH over the links is refit, not rebuilt.  On an invalid
+ * pose nothing changes.
+ */
+OPX_API opx_status opx_linkset_set_poses(opx_linkset *links, const opx_pose *poses,
+                                         size_t count, size_t stride);
+OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
+                                        opx_pose *out_pose);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* OCTOPROX_LINKSET_H */

@@ -1,0 +1,103 @@
+/*
+ * opx_query: a per-thread query context.  It holds the engine, its scratch
+ * memory and the results of its last query, so repeated queries allocate
+ * nothing once warm.  Use one context per thread; any number of contexts
+ * may query the same octree and link set at once (both are read-only
+ * during queries).
+ */
+#ifndef OCTOPROX_QUERY_H
+#define OCTOPROX_QUERY_H
+
+#include "common.h"
+#include "linkset.h"
+#include "octree.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct opx_query opx_query;
+
+/* Direct octree traversal (paper IV.B): no per-frame preprocessing. */
+#define OPX_ENGINE_DIRECT 1
+
+typedef struct opx_query_options {
+    uint32_t struct_size;
+    int32_t engine; /* OPX_ENGINE_DIRECT (default) */
+} opx_query_options;
+
+#define OPX_QUERY_OPTIONS_INIT {sizeof(opx_query_options), OPX_ENGINE_DIRECT}
+OPX_API opx_status opx_query_options_init(opx_query_options *options, size_t size);
+
+/* options may be NULL (defaults). */
+OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out);
+OPX_API void opx_query_destroy(opx_query *query);
+
+/* What unknown (never observed) space is during a query. */
+#define OPX_UNKNOWN_FREE 0     /* optimistic, as MoveIt/FCL (default) */
+#define OPX_UNKNOWN_OCCUPIED 1 /* safe: a link must lie in observed space */
+
+typedef struct opx_collision_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /* OPX_UNKNOWN_FREE (default) or OPX_UNKNOWN_OCCUPIED */
+    /* Cells with probability >= this are obstacles.  0 (default): the
+     * octree's occupied_threshold. */
+    double occupancy_threshold;
+    /* 0: answer yes/no only; 1 (default): stop at the first contact and
+     * report it; N: collect up to N contacts (UINT32_MAX: all). */
+    uint32_t max_contacts;
+    int32_t reserved0;
+} opx_collision_request;
+
+#define OPX_COLLISION_REQUEST_INIT \
+    {sizeof(opx_collision_request), OPX_UNKNOWN_FREE, 0.0, 1, 0}
+OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size);
+
+typedef struct opx_collision_result {
+    uint32_t struct_size;
+    int32_t collided;       /* 1 when some enabled link touches an obstacle cell */
+    uint64_t contact_count; /* contacts held by the query (opx_query_get_contact) */
+    int32_t truncated;      /* 1 when contacts were left out (max_contacts reached) */
+    uint32_t reserved0;
+    uint64_t narrow_tests;  /* exact shape-vs-cell tests run (a cost measure) */
+} opx_collision_result;
+
+#define OPX_COLLISION_RESULT_INIT {sizeof(opx_collision_result), 0, 0, 0, 0, 0}
+OPX_API opx_status opx_collision_result_init(opx_collision_result *result, size_t size);
+
+/* One contact: a shape of a link touching an obstacle cell.  Cells are
+ * cubes in the map frame; a shape touching a cell (distance <= padding,
+ * closed sets) collides; see docs/geometry.md for the tolerance. */
+typedef struct opx_contact {
+    uint32_t struct_size;
+    uint32_t link;          /* index in the link set */
+    uint32_t shape;         /* index within the link */
+    int32_t cell_class;     /* OPX_CELL_OCCUPIED, or OPX_CELL_UNKNOWN with
+                             * OPX_UNKNOWN_OCCUPIED */
+    double cell_center[3];  /* map frame, metres */
+    double cell_size;       /* edge, metres */
+    double cell_probability; /* 0.5 for unknown cells */
+} opx_contact;
+
+#define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0}
+OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size);
+
+/*
+ * Does the link set (enabled links, padding included, at their current
+ * poses) collide with the octree?  request may be NULL (defaults).  The
+ * contacts stay in the query until its next query.
+ */
+OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree,
+                                     const opx_linkset *links,
+                                     const opx_collision_request *request,
+                                     opx_collision_result *out_result);
+
+/* Contact `index` (< contact_count) of the last collision query. */
+OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index,
+                                         opx_contact *out_contact);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* OCTOPROX_QUERY_H */

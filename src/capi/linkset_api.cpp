@@ -1,0 +1,250 @@
+// C shims: link sets (robots made of shapes).
+#include "capi/checks.hpp"
+#include "capi/handles.hpp"
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+void require_positive(double value, const char *argument) {
+    if (!(value > 0.0) || !std::isfinite(value))
+        throw_invalid(format("%s is %g; a positive length in metres is needed", argument, value));
+}
+
+void require_padding(double value, const char *argument) {
+    if (!(value >= 0.0) || !std::isfinite(value))
+        throw_invalid(format("%s is %g; a padding is a finite length >= 0 in metres", argument, value));
+}
+
+uint32_t require_link(const opx_linkset *links, uint32_t link) {
+    if (link >= links->links.link_count())
+        throw_invalid(format("link %u does not exist (the set has %zu links)", link, links->links.link_count()));
+    return link;
+}
+
+std::vector<Vec3> read_vertices(const opx_shape &shape) {
+    if (shape.vertex_count == 0) throw_invalid("shape->vertex_count is 0");
+    require_pointer(shape.vertices, "shape->vertices");
+    const size_t stride = shape.vertex_stride == 0 ? 3 * sizeof(double) : shape.vertex_stride;
+    if (stride < 3 * sizeof(double))
+        throw_invalid(format("shape->vertex_stride %zu is smaller than one vertex (24 bytes)", stride));
+    std::vector<Vec3> vertices(shape.vertex_count);
+    const auto *bytes = reinterpret_cast<const unsigned char *>(shape.vertices);
+    for (size_t i = 0; i < shape.vertex_count; ++i) {
+        double xyz[3];
+        std::memcpy(xyz, bytes + i * stride, sizeof xyz);
+        for (int axis = 0; axis < 3; ++axis)
+            if (!std::isfinite(xyz[axis])) throw_invalid(format("shape->vertices[%zu] is not finite", i));
+        vertices[i] = Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    return vertices;
+}
+
+std::vector<std::array<uint32_t, 3>> read_triangles(const opx_shape &shape) {
+    if (shape.triangle_count == 0) throw_invalid("shape->triangle_count is 0");
+    require_pointer(shape.indices, "shape->indices");
+    std::vector<std::array<uint32_t, 3>> triangles(shape.triangle_count);
+    for (size_t t = 0; t < shape.triangle_count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t index = shape.indices[3 * t + k];
+            if (index >= shape.vertex_count)
+                throw_invalid(format("shape->indices[%zu] is %u, beyond vertex_count %zu", 3 * t + k,
+                                     index, shape.vertex_count));
+            triangles[t][k] = index;
+        }
+    }
+    return triangles;
+}
+
+ShapeDef read_shape(const opx_shape *in) {
+    opx_shape shape = OPX_SHAPE_INIT;
+    require_pointer(in, "shape");
+    read_versioned(in, shape, "shape");
+    ShapeDef def;
+    def.local = read_pose(shape.pose, "shape->pose");
+    switch (shape.kind) {
+    case OPX_SHAPE_SPHERE: require_positive(shape.radius, "shape->radius"); break;
+    case OPX_SHAPE_BOX:
+        for (int axis = 0; axis < 3; ++axis) require_positive(shape.size[axis], "shape->size[i]");
+        def.half_size = 0.5 * Vec3(shape.size[0], shape.size[1], shape.size[2]);
+        break;
+    case OPX_SHAPE_CYLINDER:
+        require_positive(shape.radius, "shape->radius");
+        require_positive(shape.length, "shape->length");
+        break;
+    case OPX_SHAPE_CAPSULE:
+        require_positive(shape.radius, "shape->radius");
+        require_padding(shape.length, "shape->length");
+        break;
+    case OPX_SHAPE_CONVEX: def.vertices = read_vertices(shape); break;
+    case OPX_SHAPE_MESH:
+        def.vertices = read_vertices(shape);
+        def.triangles = read_triangles(shape);
+        break;
+    default: throw_invalid(format("shape->kind %d is not an OPX_SHAPE_* kind (1..6)", shape.kind));
+    }
+    def.kind = static_cast<ShapeKind>(shape.kind);
+    def.radius = shape.radius;
+    def.half_length = 0.5 * shape.length;
+    return def;
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_shape_init(opx_shape *shape, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(shape, size, opx_shape(OPX_SHAPE_INIT), "shape");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_create(opx_linkset **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(out, "out");
+        *out = new opx_linkset();
+        return OPX_OK;
+    });
+}
+
+OPX_API void opx_linkset_destroy(opx_linkset *links) { delete links; }
+
+OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out, "out");
+        *out = new opx_linkset{links->links};
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_add_link(opx_linkset *links, const char *name, uint32_t *out_link) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(name, "name");
+        const uint32_t index = links->links.add_link(name);
+        if (out_link != nullptr) *out_link = index;
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link, const opx_shape *shape,
+                                         uint32_t *out_shape) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_link(links, link);
+        const uint32_t index = links->links.add_shape(link, read_shape(shape));
+        if (out_shape != nullptr) *out_shape = index;
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->links.link_count());
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link, uint32_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->links.link(require_link(links, link)).shapes.size());
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link, const char **out_name) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_name, "out_name");
+        *out_name = links->links.link(require_link(links, link)).name.c_str();
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_find_link(const opx_linkset *links, const char *name, uint32_t *out_link) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(name, "name");
+        require_pointer(out_link, "out_link");
+        for (uint32_t i = 0; i < links->links.link_count(); ++i) {
+            if (links->links.link(i).name == name) {
+                *out_link = i;
+                return OPX_OK;
+            }
+        }
+        throw_invalid(format("name \"%.80s\": no link has this name", name));
+    });
+}
+
+OPX_API opx_status opx_linkset_set_padding(opx_linkset *links, double padding) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_padding(padding, "padding");
+        links->links.set_padding(padding);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_set_link_padding(opx_linkset *links, uint32_t link, double padding) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_link(links, link);
+        require_padding(padding, "padding");
+        links->links.set_link_padding(link, padding);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_set_link_enabled(opx_linkset *links, uint32_t link, int32_t enabled) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_link(links, link);
+        links->links.set_link_enabled(link, enabled != 0);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_set_poses(opx_linkset *links, const opx_pose *poses, size_t count,
+                                         size_t stride) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        if (count != links->links.link_count())
+            throw_invalid(format("count %zu differs from the number of links, %zu", count,
+                                 links->links.link_count()));
+        if (stride != 0 && stride < sizeof(opx_pose))
+            throw_invalid(format("stride %zu is smaller than one opx_pose (%zu bytes)", stride, sizeof(opx_pose)));
+        if (count > 0) require_pointer(poses, "poses");
+        const size_t step = stride == 0 ? sizeof(opx_pose) : stride;
+        std::vector<Pose> converted(count);
+        for (size_t i = 0; i < count; ++i) {
+            opx_pose pose;
+            std::memcpy(&pose, reinterpret_cast<const unsigned char *>(poses) + i * step, sizeof pose);
+            converted[i] = read_pose(pose, format("poses[%zu]", i).c_str());
+        }
+        links->links.set_poses(converted);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link, opx_pose *out_pose) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_pose, "out_pose");
+        const Pose &pose = links->links.link(require_link(links, link)).pose;
+        const Eigen::Quaterniond q(pose.rotation);
+        *out_pose = opx_pose{{pose.translation.x(), pose.translation.y(), pose.translation.z()},
+                             {q.x(), q.y(), q.z(), q.w()}};
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,118 @@
+// C shims: query contexts and collision queries.
+#include "capi/checks.hpp"
+#include "capi/handles.hpp"
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+CollisionSettings read_collision_request(const opx_collision_request *request, const SensorOctree &tree) {
+    opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
+    read_versioned(request, merged, "request");
+    if (merged.unknown_policy != OPX_UNKNOWN_FREE && merged.unknown_policy != OPX_UNKNOWN_OCCUPIED)
+        throw_invalid(format("request->unknown_policy %d is neither OPX_UNKNOWN_FREE (0) nor "
+                             "OPX_UNKNOWN_OCCUPIED (1)",
+                             merged.unknown_policy));
+    const double threshold = merged.occupancy_threshold;
+    if (!(threshold == 0.0 || (threshold > 0.0 && threshold < 1.0)))
+        throw_invalid(format("request->occupancy_threshold is %g; 0 (the octree's) or a probability "
+                             "strictly between 0 and 1 is needed",
+                             threshold));
+    CollisionSettings settings;
+    settings.threshold_log_odds =
+        static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
+    settings.unknown_occupied = merged.unknown_policy == OPX_UNKNOWN_OCCUPIED;
+    settings.max_contacts = merged.max_contacts;
+    return settings;
+}
+
+opx_contact contact_to_abi(const Contact &c) {
+    return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
+                       {c.center[0], c.center[1], c.center[2]}, c.size, c.probability};
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_query_options_init(opx_query_options *options, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(options, size, opx_query_options(OPX_QUERY_OPTIONS_INIT), "options");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(request, size, opx_collision_request(OPX_COLLISION_REQUEST_INIT), "request");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_collision_result_init(opx_collision_result *result, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(result, size, opx_collision_result(OPX_COLLISION_RESULT_INIT), "result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(contact, size, opx_contact(OPX_CONTACT_INIT), "contact");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out) {
+    if (out != nullptr) *out = nullptr;
+    return guard(__func__, [&] {
+        require_pointer(out, "out");
+        opx_query_options merged = OPX_QUERY_OPTIONS_INIT;
+        read_versioned(options, merged, "options");
+        if (merged.engine != OPX_ENGINE_DIRECT)
+            throw_invalid(format("options->engine %d is not OPX_ENGINE_DIRECT (1)", merged.engine));
+        auto query = std::make_unique<opx_query>();
+        query->engine = merged.engine;
+        *out = query.release();
+        return OPX_OK;
+    });
+}
+
+OPX_API void opx_query_destroy(opx_query *query) { delete query; }
+
+OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                     const opx_collision_request *request,
+                                     opx_collision_result *out_result) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(tree, "tree");
+        require_pointer(links, "links");
+        require_pointer(out_result, "out_result");
+        require_struct_size(out_result->struct_size, "out_result");
+        const CollisionSettings settings = read_collision_request(request, *tree->tree);
+        const CollisionOutcome outcome = query->direct.collide(*tree->tree, links->links, settings, query->contacts);
+        opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+        result.collided = outcome.collided ? 1 : 0;
+        result.contact_count = query->contacts.size();
+        result.truncated = outcome.truncated ? 1 : 0;
+        result.narrow_tests = outcome.narrow_tests;
+        write_versioned(out_result, result, "out_result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index, opx_contact *out_contact) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(out_contact, "out_contact");
+        require_struct_size(out_contact->struct_size, "out_contact");
+        if (index >= query->contacts.size())
+            throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index,
+                                 query->contacts.size()));
+        write_versioned(out_contact, contact_to_abi(query->contacts[index]), "out_contact");
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,29 @@
+// Settings and outputs of collision queries, shared by the engines.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace octoprox {
+
+struct CollisionSettings {
+    float threshold_log_odds = 0.0f;  // obstacle when a cell's log-odds >= this
+    bool unknown_occupied = false;
+    uint32_t max_contacts = 1;        // 0: yes/no only
+};
+
+struct Contact {
+    uint32_t link = 0, shape = 0;
+    int cell_class = 0;
+    double center[3] = {0, 0, 0};
+    double size = 0.0;
+    double probability = 0.0;
+};
+
+struct CollisionOutcome {
+    bool collided = false;
+    bool truncated = false;
+    uint64_t narrow_tests = 0;
+};
+
+}  // namespace octoprox

@@ -1,0 +1,41 @@
+// The direct engine's collision query (paper IV.B, Algorithm 1): the
+// octree, as it is, against the BVH of the robot's placed shapes; no
+// per-frame preprocessing of the map.
+#pragma once
+
+#include "octree/sensor_octree.hpp"
+#include "query/collision_types.hpp"
+#include "robot/linkset.hpp"
+
+namespace octoprox {
+
+class DirectCollider {
+public:
+    // Runs one query; contacts is cleared and filled (its capacity is kept,
+    // so warm queries allocate nothing).
+    CollisionOutcome collide(const SensorOctree &tree, const LinkSet &links,
+                             const CollisionSettings &settings, std::vector<Contact> &contacts);
+
+private:
+    // One octree cube: a node (nullptr for unknown space) and its key.
+    struct Cell {
+        OctreeView::NodeRef node;
+        CellKey key;
+    };
+
+    void recurse(const Cell &cell, int32_t robot_node);
+    void descend_octree(const Cell &cell, int32_t robot_node);
+    void test_leaf_pair(const Cell &cell, int32_t robot_node);
+    bool is_obstacle_leaf(const Cell &cell) const;
+    void record(const Cell &cell, const PlacedShape &shape);
+
+    const OctreeView *view_ = nullptr;
+    const SensorOctree *tree_ = nullptr;
+    const LinkSet *links_ = nullptr;
+    CollisionSettings settings_;
+    std::vector<Contact> *contacts_ = nullptr;
+    CollisionOutcome outcome_;
+    bool done_ = false;
+};
+
+}  // namespace octoprox

@@ -1,0 +1,56 @@
+#include "query/narrow_phase.hpp"
+
+#include "geometry/gjk.hpp"
+
+namespace octoprox {
+namespace {
+
+double point_box_distance2(const Vec3 &p, const Vec3 &center, const Vec3 &half) {
+    return ((p - center).cwiseAbs() - half).cwiseMax(0.0).squaredNorm();
+}
+
+bool convex_within(const Convex &core, double limit, const Vec3 &center, const Vec3 &half) {
+    if (core.kind == ConvexKind::kPoint) return point_box_distance2(core.center, center, half) <= limit * limit;
+    GjkQuery query;
+    query.cell_center = center;
+    query.cell_half = half;
+    query.shape = &core;
+    query.stop_above = limit;
+    query.stop_below = limit;
+    const GjkResult result = gjk_cell_distance(query);
+    return result.intersecting || result.distance <= limit;
+}
+
+// Depth-first over the mesh's triangle tree, with the cell grown by the limit.
+bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, const Vec3 &half,
+                 uint64_t &narrow_tests) {
+    const AabbTree &tree = shape.mesh_tree;
+    const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));
+    int32_t stack[64];
+    int top = 0;
+    stack[top++] = tree.root();
+    while (top > 0) {
+        const AabbTreeNode &node = tree.node(stack[--top]);
+        if (!node.box.overlaps(cell)) continue;
+        if (node.is_leaf()) {
+            ++narrow_tests;
+            if (convex_within(shape.triangle(node.item), limit, center, half)) return true;
+            continue;
+        }
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const Vec3 &cell_half,
+                        uint64_t &narrow_tests) {
+    const double limit = shape.inflation + kTouchTolerance;
+    if (shape.kind == ShapeKind::kMesh) return mesh_within(shape, limit, cell_center, cell_half, narrow_tests);
+    ++narrow_tests;
+    return convex_within(shape.core, limit, cell_center, cell_half);
+}
+
+}  // namespace octoprox

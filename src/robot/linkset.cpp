@@ -1,0 +1,103 @@
+#include "robot/linkset.hpp"
+
+namespace octoprox {
+
+LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_) {
+    for (const Link &l : other.links_) {
+        Link copy;
+        copy.name = l.name, copy.padding = l.padding, copy.enabled = l.enabled, copy.pose = l.pose;
+        for (const auto &def : l.shapes) copy.shapes.push_back(std::make_unique<ShapeDef>(*def));
+        links_.push_back(std::move(copy));
+    }
+    rebuild();
+}
+
+uint32_t LinkSet::add_link(const std::string &name) {
+    Link link;
+    link.name = name;
+    links_.push_back(std::move(link));
+    rebuild();
+    return static_cast<uint32_t>(links_.size() - 1);
+}
+
+uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
+    if (def.kind == ShapeKind::kMesh) build_mesh_tree(def);
+    links_[link].shapes.push_back(std::make_unique<ShapeDef>(std::move(def)));
+    rebuild();
+    return static_cast<uint32_t>(links_[link].shapes.size() - 1);
+}
+
+void LinkSet::set_padding(double padding) {
+    padding_ = padding;
+    for (uint32_t i = 0; i < links_.size(); ++i) place_link(i);
+    refit();
+}
+
+void LinkSet::set_link_padding(uint32_t link, double padding) {
+    links_[link].padding = padding;
+    place_link(link);
+    refit();
+}
+
+void LinkSet::set_link_enabled(uint32_t link, bool enabled) {
+    links_[link].enabled = enabled;
+    place_link(link);
+    refit();
+}
+
+// The first poses after the shapes changed also rebuild the topology: a
+// tree built with every link at the origin would cull nothing.  Later
+// poses only refit it.
+void LinkSet::set_poses(const std::vector<Pose> &poses) {
+    for (uint32_t i = 0; i < links_.size(); ++i) {
+        links_[i].pose = poses[i];
+        place_link(i);
+    }
+    if (topology_from_poses_) {
+        refit();
+    } else {
+        build_topology();
+        topology_from_poses_ = true;
+    }
+}
+
+void LinkSet::place_link(uint32_t index) {
+    const Link &l = links_[index];
+    for (uint32_t s = 0; s < l.shapes.size(); ++s) {
+        PlacedShape &placed = placed_[first_placed_[index] + s];
+        placed.link = index, placed.shape = s;
+        place_shape(*l.shapes[s], l.pose, padding_ + l.padding, l.enabled, placed);
+    }
+}
+
+void LinkSet::rebuild() {
+    first_placed_.clear();
+    size_t total = 0;
+    for (const Link &l : links_) {
+        first_placed_.push_back(static_cast<uint32_t>(total));
+        total += l.shapes.size();
+    }
+    placed_.assign(total, PlacedShape());
+    for (uint32_t i = 0; i < links_.size(); ++i) place_link(i);
+    build_topology();
+    topology_from_poses_ = false;
+}
+
+// Disabled shapes have empty boxes; the split uses their centres instead.
+void LinkSet::build_topology() {
+    std::vector<Aabb> boxes;
+    boxes.reserve(placed_.size());
+    for (const PlacedShape &p : placed_)
+        boxes.push_back(p.box.empty() ? Aabb::from_center(p.core.center, Vec3::Zero()) : p.box);
+    tree_.build(boxes);
+    refit();
+}
+
+void LinkSet::refit() {
+    std::vector<Aabb> boxes;
+    boxes.reserve(placed_.size());
+    for (const PlacedShape &p : placed_) boxes.push_back(p.box);
+    tree_.refit(boxes);
+}
+
+}  // namespace octoprox

@@ -1,0 +1,60 @@
+// A robot as links with shapes, paddings, enabled flags and map-frame
+// poses, and the BVH over all placed shapes that queries traverse.  Every
+// change brings the placed shapes and the BVH up to date at once, so a
+// const LinkSet is always ready to query (from any number of threads).
+#pragma once
+
+#include "robot/shape.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace octoprox {
+
+struct Link {
+    std::string name;
+    double padding = 0.0;
+    bool enabled = true;
+    Pose pose;
+    // unique_ptr: PlacedShape keeps a pointer to its ShapeDef, which must
+    // not move when the vector grows.
+    std::vector<std::unique_ptr<ShapeDef>> shapes;
+};
+
+class LinkSet {
+public:
+    LinkSet() = default;
+    LinkSet(const LinkSet &other);
+    LinkSet &operator=(const LinkSet &) = delete;
+
+    uint32_t add_link(const std::string &name);
+    uint32_t add_shape(uint32_t link, ShapeDef def);
+    void set_padding(double padding);
+    void set_link_padding(uint32_t link, double padding);
+    void set_link_enabled(uint32_t link, bool enabled);
+    void set_poses(const std::vector<Pose> &poses);
+
+    size_t link_count() const { return links_.size(); }
+    const Link &link(uint32_t index) const { return links_[index]; }
+    double padding() const { return padding_; }
+
+    // What queries read: placed shapes and the tree over their boxes.
+    const std::vector<PlacedShape> &placed() const { return placed_; }
+    const AabbTree &tree() const { return tree_; }
+
+private:
+    void place_link(uint32_t link);
+    void rebuild();  // after the set of shapes changed
+    void build_topology();
+    void refit();    // after boxes changed
+
+    std::vector<Link> links_;
+    double padding_ = 0.0;
+    std::vector<PlacedShape> placed_;
+    std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_
+    AabbTree tree_;
+    bool topology_from_poses_ = false;
+};
+
+}  // namespace octoprox

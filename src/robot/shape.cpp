@@ -1,0 +1,107 @@
+#include "robot/shape.hpp"
+
+namespace octoprox {
+namespace {
+
+Aabb triangle_box(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+    Aabb box;
+    box.grow(a), box.grow(b), box.grow(c);
+    return box;
+}
+
+std::vector<Aabb> triangle_boxes(const std::vector<Vec3> &vertices,
+                                 const std::vector<std::array<uint32_t, 3>> &triangles) {
+    std::vector<Aabb> boxes;
+    boxes.reserve(triangles.size());
+    for (const auto &t : triangles) boxes.push_back(triangle_box(vertices[t[0]], vertices[t[1]], vertices[t[2]]));
+    return boxes;
+}
+
+// Bounds of the core in the map frame, before inflation.
+Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
+    const Convex &core = s.core;
+    switch (def.kind) {
+    case ShapeKind::kSphere: return Aabb::from_center(core.center, Vec3::Zero());
+    case ShapeKind::kCapsule: return triangle_box(core.v[0], core.v[1], core.v[1]);
+    case ShapeKind::kBox: return Aabb::from_center(core.center, core.axes.cwiseAbs() * core.half);
+    case ShapeKind::kCylinder: {
+        const Vec3 axis = core.axes.col(2);
+        Vec3 half;
+        for (int i = 0; i < 3; ++i)
+            half[i] = core.half.z() * std::fabs(axis[i]) +
+                      core.half.x() * std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));
+        return Aabb::from_center(core.center, half);
+    }
+    case ShapeKind::kConvex:
+    case ShapeKind::kMesh: {
+        Aabb box;
+        for (const Vec3 &v : s.world_vertices) box.grow(v);
+        return box;
+    }
+    }
+    return Aabb();
+}
+
+}  // namespace
+
+void build_mesh_tree(ShapeDef &def) { def.mesh_tree.build(triangle_boxes(def.vertices, def.triangles)); }
+
+Convex PlacedShape::triangle(int32_t index) const {
+    const auto &t = def->triangles[index];
+    Convex c;
+    c.kind = ConvexKind::kTriangle;
+    c.v[0] = world_vertices[t[0]], c.v[1] = world_vertices[t[1]], c.v[2] = world_vertices[t[2]];
+    return c;
+}
+
+void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled,
+                 PlacedShape &out) {
+    const Eigen::Matrix3d rotation = link_pose.rotation * def.local.rotation;
+    const Vec3 center = link_pose.apply(def.local.translation);
+    out.def = &def;
+    out.kind = def.kind;
+    out.inflation = padding;
+    out.core = Convex();
+    out.core.center = center;
+    out.core.axes = rotation;
+    switch (def.kind) {
+    case ShapeKind::kSphere:
+        out.core.kind = ConvexKind::kPoint;
+        out.inflation += def.radius;
+        break;
+    case ShapeKind::kCapsule:
+        out.core.kind = ConvexKind::kSegment;
+        out.core.v[0] = center - def.half_length * rotation.col(2);
+        out.core.v[1] = center + def.half_length * rotation.col(2);
+        out.inflation += def.radius;
+        break;
+    case ShapeKind::kBox:
+        out.core.kind = ConvexKind::kBox;
+        out.core.half = def.half_size;
+        break;
+    case ShapeKind::kCylinder:
+        out.core.kind = ConvexKind::kCylinder;
+        out.core.half = Vec3(def.radius, def.radius, def.half_length);
+        break;
+    case ShapeKind::kConvex:
+    case ShapeKind::kMesh:
+        out.world_vertices.resize(def.vertices.size());
+        for (size_t i = 0; i < def.vertices.size(); ++i)
+            out.world_vertices[i] = rotation * def.vertices[i] + center;
+        out.core.kind = ConvexKind::kHull;
+        out.core.hull = out.world_vertices.data();
+        out.core.hull_count = out.world_vertices.size();
+        break;
+    }
+    if (def.kind == ShapeKind::kMesh) {
+        if (out.mesh_tree.size() != def.mesh_tree.size()) out.mesh_tree = def.mesh_tree;
+        out.mesh_tree.refit(triangle_boxes(out.world_vertices, def.triangles));
+    }
+    out.box = Aabb();
+    if (enabled) {
+        out.box = core_box(out, def);
+        out.box.inflate(out.inflation);
+    }
+}
+
+}  // namespace octoprox
