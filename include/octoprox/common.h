@@ -11,7 +11,10 @@
  *    argument failed.  On error nothing an object already held is lost.
  *  - Every options/request/result struct starts with `struct_size`; fill it
  *    with its OPX_X_INIT macro or opx_x_init(ptr, sizeof *ptr).  Fields are
- *    only ever appended, so old callers keep working.
+ *    only ever appended, so old callers keep working: the library reads and
+ *    writes no more than struct_size bytes.  A struct_size below 4 (0: an
+ *    uninitialised struct) gives OPX_ERROR_VERSION; opx_x_init sets
+ *    struct_size to min(size, the library's size of the struct).
  *  - Arrays are (pointer, count, stride in bytes); a stride of 0 means packed.
  *  - The library never keeps a caller's pointer after a call returns.
  *  - Functions taking a `const` handle may run concurrently on the same

@@ -82,8 +82,9 @@ typedef struct opx_insert_options {
     int32_t mode;         /* OPX_INSERT_RAYCAST (default) or OPX_INSERT_ENDPOINTS */
     opx_pose sensor_pose; /* the sensor frame in the map frame; identity */
     /* Points farther than this from the sensor origin (metres) are skipped
-     * and counted; they clear no free space either.  <= 0 or +infinity: no
-     * limit (the default, -1, as in OctoMap). */
+     * and counted.  Unlike OctoMap, which clears free space along a
+     * truncated ray, a skipped point changes nothing.  <= 0 or +infinity: no
+     * limit (the default, -1, OctoMap's "no limit" value); NaN is invalid. */
     double max_range;
 } opx_insert_options;
 
@@ -214,8 +215,9 @@ OPX_API opx_status opx_octree_load_memory(const void *data, size_t size,
                                           const opx_octree_options *options, opx_octree **out);
 /*
  * Loads the `data` field of a ROS octomap_msgs/Octomap message: `binary`
- * nonzero for a binary map (.bt body), zero for a full map (.ot body, the
- * message id must then be "OcTree").  resolution is the message's.
+ * nonzero for a binary map (.bt body), zero for a full map (.ot body).  The
+ * caller checks the message's `id`: only "OcTree" maps are read correctly.
+ * resolution is the message's, in metres (> 0).
  */
 OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_t binary,
                                            double resolution, const opx_octree_options *options,

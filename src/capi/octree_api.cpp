@@ -43,6 +43,9 @@ PointSource read_point_source(const void *points, size_t count, size_t stride, i
         throw_invalid(format("stride %zu is smaller than one point (3 %s = %zu bytes)", stride,
                              source.is_double ? "doubles" : "floats", point_bytes));
     if (count > 0) require_pointer(points, "points");
+    const size_t step = stride == 0 ? point_bytes : stride;
+    if (count > 0 && count - 1 > (SIZE_MAX - point_bytes) / step)
+        throw_invalid(format("count %zu with stride %zu spans more bytes than memory has", count, step));
     source.data = static_cast<const unsigned char *>(points);
     source.count = count;
     source.stride = stride == 0 ? point_bytes : stride;

@@ -46,14 +46,20 @@ Header parse_header(const std::string &bytes) {
         fields >> token;
         if (token.empty() || token[0] == '#') continue;
         if (token == "data") {
-            header.body_offset = static_cast<size_t>(in.tellg());
+            // At the end of the input (no newline after "data") tellg is -1:
+            // the body is empty, which only an empty tree may have.
+            const std::streamoff offset = in.tellg();
+            header.body_offset = offset < 0 ? bytes.size() : static_cast<size_t>(offset);
             if (header.resolution == 0.0) throw_corrupt("header has no \"res\" line");
             if (header.format == MapFormat::kFull && header.id.empty())
                 throw_corrupt("header has no \"id\" line");
             return header;
         }
         if (token == "id") fields >> header.id;
-        else if (token == "size") fields >> header.size;
+        else if (token == "size") {
+            fields >> header.size;
+            if (!fields.fail() && header.size < 0) throw_corrupt("header gives a negative node count");
+        }
         else if (token == "res") fields >> header.resolution;
         if (fields.fail()) throw_corrupt("malformed header line \"" + line.substr(0, 60) + "\"");
     }

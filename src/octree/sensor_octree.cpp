@@ -75,6 +75,12 @@ void SensorOctree::apply_params() {
 }
 
 bool SensorOctree::contains(const Vec3 &point) const {
+    // Reject far points before OctoMap converts them to int (undefined
+    // behaviour for values beyond the int range).
+    // The cube is [-limit, limit) on each axis (key 0 is the lower face).
+    const double limit = kKeyCenter * params_.resolution;
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(point[axis] >= -limit && point[axis] < limit)) return false;
     octomap::OcTreeKey key;
     return tree_->coordToKeyChecked(point.x(), point.y(), point.z(), key);
 }
