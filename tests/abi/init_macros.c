@@ -1,0 +1,27 @@
+/* Uses every OPX_*_INIT macro, compiled as C99 and as C++11 with -Wextra
+ * -Werror: a macro missing a field (-Wmissing-field-initializers) or not
+ * valid C++ (narrowing, designated initialisers) fails the build. */
+#include <octoprox/octoprox.h>
+
+int opx_init_macros_compile(void);
+
+int opx_init_macros_compile(void) {
+    const opx_pose pose = OPX_POSE_IDENTITY;
+    const opx_octree_options octree_options = OPX_OCTREE_OPTIONS_INIT;
+    const opx_insert_options insert_options = OPX_INSERT_OPTIONS_INIT;
+    const opx_insert_report report = OPX_INSERT_REPORT_INIT;
+    const opx_cell_info cell = OPX_CELL_INFO_INIT;
+    const opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
+    const opx_shape shape = OPX_SHAPE_INIT;
+    const opx_query_options query_options = OPX_QUERY_OPTIONS_INIT;
+    const opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    const opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    const opx_contact contact = OPX_CONTACT_INIT;
+    return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
+           insert_options.struct_size == sizeof insert_options &&
+           report.struct_size == sizeof report && cell.struct_size == sizeof cell &&
+           stats.struct_size == sizeof stats && shape.struct_size == sizeof shape &&
+           query_options.struct_size == sizeof query_options &&
+           request.struct_size == sizeof request && result.struct_size == sizeof result &&
+           contact.struct_size == sizeof contact;
+}

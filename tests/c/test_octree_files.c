@@ -1,0 +1,183 @@
+/*
+ * opx_octree_save_file and _load_file: format by extension, files equal to
+ * the memory images, arguments, missing and unwritable paths.  Files are
+ * written in the working directory (ctest: the build directory).
+ */
+#include "opx_test.h"
+
+#define NOT_NULL_SENTINEL ((opx_octree *)(uintptr_t)0x10)
+#define MISSING_DIR "/nonexistent-octoprox-test-dir"
+
+static byte_buffer read_whole_file(const char *path) {
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    byte_buffer b = {NULL, 0};
+    unsigned char chunk[4096];
+    size_t n;
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        b.data = realloc(b.data, b.size + n);
+        assert_non_null(b.data);
+        memcpy(b.data + b.size, chunk, n);
+        b.size += n;
+    }
+    fclose(f);
+    return b;
+}
+
+static void write_whole_file(const char *path, const unsigned char *data, size_t size) {
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, size, f), size);
+    assert_int_equal(fclose(f), 0);
+}
+
+static int file_exists(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (f != NULL) fclose(f);
+    return f != NULL;
+}
+
+/* Saves the sample map to path, checks the file holds the same bytes as
+ * save_memory in `expected_format`, and loads it back. */
+static void check_file_round_trip(const char *path, int32_t format, int32_t expected_format) {
+    opx_octree *tree = new_sample_map();
+    assert_ok(opx_octree_save_file(tree, path, format));
+    byte_buffer file = read_whole_file(path);
+    byte_buffer memory = save_to_memory(tree, expected_format);
+    assert_int_equal(file.size, memory.size);
+    assert_memory_equal(file.data, memory.data, memory.size);
+
+    opx_octree *loaded = NULL;
+    assert_ok(opx_octree_load_file(path, NULL, &loaded));
+    assert_non_null(loaded);
+    const opx_octree_stats a = stats_of(loaded), b = stats_of(tree);
+    assert_int_equal(a.leaves_occupied, b.leaves_occupied);
+    assert_int_equal(a.leaves_free, b.leaves_free);
+    assert_memory_equal(a.known_max, b.known_max, sizeof a.known_max);
+    assert_true(a.resolution == RES);
+    opx_octree_destroy(loaded);
+    opx_octree_destroy(tree);
+    free(file.data);
+    free(memory.data);
+    remove(path);
+}
+
+static void save_auto_picks_format_by_extension(void **state) {
+    (void)state;
+    check_file_round_trip("c_octree_files_auto.bt", OPX_FORMAT_AUTO, OPX_FORMAT_BT);
+    check_file_round_trip("c_octree_files_auto.ot", OPX_FORMAT_AUTO, OPX_FORMAT_OT);
+}
+
+static void explicit_format_wins_over_extension(void **state) {
+    (void)state;
+    check_file_round_trip("c_octree_files_full.map", OPX_FORMAT_OT, OPX_FORMAT_OT);
+    check_file_round_trip("c_octree_files_binary.ot", OPX_FORMAT_BT, OPX_FORMAT_BT);
+}
+
+static void ot_file_keeps_probabilities(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    const char *path = "c_octree_files_prob.ot";
+    assert_ok(opx_octree_save_file(tree, path, OPX_FORMAT_AUTO));
+    opx_octree *loaded = NULL;
+    assert_ok(opx_octree_load_file(path, NULL, &loaded));
+    size_t n = 0, m = 0;
+    opx_leaf *got = all_leaves(loaded, OPX_MASK_ALL_KNOWN, &n);
+    opx_leaf *want = all_leaves(tree, OPX_MASK_ALL_KNOWN, &m);
+    assert_same_leaves(got, n, want, m);
+    free(got);
+    free(want);
+    opx_octree_destroy(loaded);
+    opx_octree_destroy(tree);
+    remove(path);
+}
+
+static void save_file_rejects_bad_arguments(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    const char *fn = "opx_octree_save_file";
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "tree",
+                   opx_octree_save_file(NULL, "c_octree_files_x.bt", OPX_FORMAT_AUTO));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "path",
+                   opx_octree_save_file(tree, NULL, OPX_FORMAT_BT));
+    const int32_t bad[] = {-1, 3, 42};
+    for (size_t i = 0; i < 3; ++i)
+        expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "format",
+                       opx_octree_save_file(tree, "c_octree_files_x.bt", bad[i]));
+    assert_false(file_exists("c_octree_files_x.bt"));
+    /* AUTO cannot pick a format for an unknown extension. */
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "path",
+                   opx_octree_save_file(tree, "c_octree_files_x.txt", OPX_FORMAT_AUTO));
+    assert_false(file_exists("c_octree_files_x.txt"));
+    opx_octree_destroy(tree);
+}
+
+static void save_file_into_missing_directory_is_io_error(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    expect_failure(OPX_ERROR_IO, "opx_octree_save_file", MISSING_DIR,
+                   opx_octree_save_file(tree, MISSING_DIR "/map.bt", OPX_FORMAT_AUTO));
+    opx_octree_destroy(tree);
+}
+
+static void expect_load_file_fails(const char *path, const opx_octree_options *options,
+                                   opx_status expected, const char *argument) {
+    opx_octree *out = NOT_NULL_SENTINEL;
+    expect_failure(expected, "opx_octree_load_file", argument,
+                   opx_octree_load_file(path, options, &out));
+    assert_null(out);
+}
+
+static void load_missing_file_is_io_error(void **state) {
+    (void)state;
+    expect_load_file_fails(MISSING_DIR "/map.bt", NULL, OPX_ERROR_IO, MISSING_DIR);
+    expect_load_file_fails("c_octree_files_does_not_exist.ot", NULL, OPX_ERROR_IO,
+                           "c_octree_files_does_not_exist.ot");
+}
+
+static void load_file_rejects_bad_arguments(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    const char *path = "c_octree_files_args.bt";
+    assert_ok(opx_octree_save_file(tree, path, OPX_FORMAT_AUTO));
+    expect_load_file_fails(NULL, NULL, OPX_ERROR_INVALID_ARGUMENT, "path");
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_octree_load_file", "out",
+                   opx_octree_load_file(path, NULL, NULL));
+    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
+    options.struct_size = 0;
+    expect_load_file_fails(path, &options, OPX_ERROR_VERSION, "struct_size");
+    options = (opx_octree_options)OPX_OCTREE_OPTIONS_INIT;
+    options.free_threshold = 0.9;
+    expect_load_file_fails(path, &options, OPX_ERROR_INVALID_ARGUMENT, "free_threshold");
+    opx_octree_destroy(tree);
+    remove(path);
+}
+
+/* A file cut in the middle of its data is corrupt, not an I/O error. */
+static void load_truncated_file_is_corrupt(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    byte_buffer ot = save_to_memory(tree, OPX_FORMAT_OT);
+    const char *path = "c_octree_files_truncated.ot";
+    write_whole_file(path, ot.data, ot.size - 3);
+    expect_load_file_fails(path, NULL, OPX_ERROR_CORRUPT, NULL);
+    write_whole_file(path, ot.data, 0);
+    expect_load_file_fails(path, NULL, OPX_ERROR_CORRUPT, NULL);
+    remove(path);
+    free(ot.data);
+    opx_octree_destroy(tree);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(save_auto_picks_format_by_extension),
+        cmocka_unit_test(explicit_format_wins_over_extension),
+        cmocka_unit_test(ot_file_keeps_probabilities),
+        cmocka_unit_test(save_file_rejects_bad_arguments),
+        cmocka_unit_test(save_file_into_missing_directory_is_io_error),
+        cmocka_unit_test(load_missing_file_is_io_error),
+        cmocka_unit_test(load_file_rejects_bad_arguments),
+        cmocka_unit_test(load_truncated_file_is_corrupt),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
