@@ -19,6 +19,7 @@ struct OctreeParams {
 void validate_params(const OctreeParams &params, const char *argument);
 
 inline double log_odds(double probability) { return std::log(probability / (1.0 - probability)); }
-inline double probability_from_log_odds(double log_odds) { return 1.0 / (1.0 + std::exp(-log_odds)); }
+// OctoMap's formula, so probabilities are bit-identical to OctoMap's.
+inline double probability_from_log_odds(double log_odds) { return 1.0 - 1.0 / (1.0 + std::exp(log_odds)); }
 
 }  // namespace octoprox

@@ -1,0 +1,36 @@
+// The insertion pipelines the ingest benchmark times, each on fresh trees.
+#pragma once
+
+#include "bench_frame.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+enum class Pipeline {
+    kOctoprox,            // opx_octree_insert_points (mode chosen by the row)
+    kOctomap,             // OcTree::insertPointCloud, discretize = false
+    kOctomapDiscretize,   // OcTree::insertPointCloud, discretize = true
+    kOctomapEndpoints,    // a KeySet of endpoint cells, then updateNode(key, true)
+};
+const char *pipeline_name(Pipeline pipeline);
+
+struct RunResult {
+    std::vector<double> insert_ms;  // one per repetition
+    uint64_t occupied = 0, free = 0, leaves = 0;
+    uint64_t memory_bytes = 0;
+    double median_ms() const;
+    double bytes_per_leaf() const { return leaves ? double(memory_bytes) / double(leaves) : 0.0; }
+};
+
+// raycast: OPX_INSERT_RAYCAST for kOctoprox, otherwise OPX_INSERT_ENDPOINTS.
+// The OctoMap pipelines are timed from the raw float array (filtering,
+// transform to the map frame in double, insert), like the library is.
+// Runs the pipelines round-robin, one insert each per repetition, so that
+// a change of machine load hits them all alike.
+std::vector<RunResult> run_interleaved(const std::vector<Pipeline> &pipelines, const Frame &frame,
+                                       double resolution, bool raycast, int reps);
+
+}  // namespace bench
