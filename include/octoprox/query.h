@@ -96,6 +96,70 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree,
 OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index,
                                          opx_contact *out_contact);
 
+/* ---- Distance ---------------------------------------------------------- */
+
+typedef struct opx_distance_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /* OPX_UNKNOWN_FREE (default) or OPX_UNKNOWN_OCCUPIED */
+    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
+    /* Allowed error: the reported distance exceeds the true minimum by at
+     * most max(abs_err, rel_err * distance).  0 and 0 (default): exact. */
+    double abs_err;
+    double rel_err;
+    /* Obstacles farther than this (metres) are not searched: the result is
+     * then found = 0, distance = cutoff ("at least cutoff").  0 (default)
+     * or +infinity: no cutoff. */
+    double cutoff;
+    int32_t per_link;        /* 1: also each link's minimum (opx_query_get_link_distances) */
+    int32_t signed_distance; /* 1: penetration depth as a negative distance
+                              * (not yet supported: OPX_ERROR_UNSUPPORTED) */
+} opx_distance_request;
+
+#define OPX_DISTANCE_REQUEST_INIT \
+    {sizeof(opx_distance_request), OPX_UNKNOWN_FREE, 0.0, 0.0, 0.0, 0.0, 0, 0}
+OPX_API opx_status opx_distance_request_init(opx_distance_request *request, size_t size);
+
+typedef struct opx_distance_result {
+    uint32_t struct_size;
+    int32_t found;          /* 1: an obstacle within the cutoff; else distance
+                             * is the cutoff (or +infinity without one) */
+    int32_t collided;       /* 1 when the distance is 0 (touching or overlapping) */
+    int32_t cell_class;     /* class of the closest cell (OPX_CELL_UNKNOWN for
+                             * unknown space with OPX_UNKNOWN_OCCUPIED) */
+    uint32_t link;          /* the closest link and its shape */
+    uint32_t shape;
+    double distance;        /* metres, >= 0, padding included */
+    double point_on_link[3]; /* witness on the padded shape, map frame */
+    double point_on_cell[3]; /* witness on the cell, map frame; the two are
+                              * `distance` apart */
+    double cell_center[3];  /* the closest cell, map frame */
+    double cell_size;
+    double cell_probability; /* 0.5 for unknown cells */
+    uint64_t narrow_tests;  /* exact shape-vs-cell distances computed */
+} opx_distance_result;
+
+#define OPX_DISTANCE_RESULT_INIT {sizeof(opx_distance_result), 0, 0, 0, 0, 0, 0.0, \
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0, 0.0, 0}
+OPX_API opx_status opx_distance_result_init(opx_distance_result *result, size_t size);
+
+/*
+ * Minimum distance between the enabled links (padding included) and the
+ * obstacle cells, with witness points.  request may be NULL (defaults).
+ */
+OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree,
+                                      const opx_linkset *links,
+                                      const opx_distance_request *request,
+                                      opx_distance_result *out_result);
+
+/*
+ * Each link's minimum distance from the last distance query made with
+ * per_link = 1, in link order (+infinity: disabled, or nothing within the
+ * cutoff).  *out_count gets the number of links; OPX_ERROR_BUFFER_TOO_SMALL
+ * when capacity is smaller (the first `capacity` are written).
+ */
+OPX_API opx_status opx_query_get_link_distances(const opx_query *query, double *out_distances,
+                                                size_t capacity, size_t *out_count);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,6 +3,7 @@
 
 #include "octree/sensor_octree.hpp"
 #include "query/direct_collide.hpp"
+#include "query/direct_distance.hpp"
 #include "robot/linkset.hpp"
 
 #include <octoprox/octree.h>
@@ -22,6 +23,8 @@ struct opx_query {
     int32_t engine = OPX_ENGINE_DIRECT;
     octoprox::DirectCollider direct;
     std::vector<octoprox::Contact> contacts;  // of the last collision query
+    octoprox::DirectDistance distance;
+    std::vector<double> link_distances;       // of the last per-link distance query
 };
 
 namespace octoprox::capi {

@@ -1,0 +1,122 @@
+// C shims: distance queries.
+#include "capi/checks.hpp"
+#include "capi/handles.hpp"
+
+#include <limits>
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+void require_error_bound(double value, const char *argument) {
+    if (!(value >= 0.0) || !std::isfinite(value))
+        throw_invalid(format("%s is %g; a finite value >= 0 is needed", argument, value));
+}
+
+float threshold_log_odds(double threshold, const SensorOctree &tree, const char *argument) {
+    if (!(threshold == 0.0 || (threshold > 0.0 && threshold < 1.0)))
+        throw_invalid(format("%s is %g; 0 (the octree's) or a probability strictly between 0 and 1 "
+                             "is needed",
+                             argument, threshold));
+    return static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
+}
+
+DistanceSettings read_distance_request(const opx_distance_request &r, const SensorOctree &tree) {
+    if (r.unknown_policy != OPX_UNKNOWN_FREE && r.unknown_policy != OPX_UNKNOWN_OCCUPIED)
+        throw_invalid(format("request->unknown_policy %d is neither OPX_UNKNOWN_FREE (0) nor "
+                             "OPX_UNKNOWN_OCCUPIED (1)",
+                             r.unknown_policy));
+    require_error_bound(r.abs_err, "request->abs_err");
+    require_error_bound(r.rel_err, "request->rel_err");
+    if (std::isnan(r.cutoff) || r.cutoff < 0.0)
+        throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
+    if (r.signed_distance)
+        throw ApiError(OPX_ERROR_UNSUPPORTED,
+                       "request->signed_distance: penetration depth is not implemented yet");
+    DistanceSettings s;
+    s.threshold_log_odds = threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
+    s.unknown_occupied = r.unknown_policy == OPX_UNKNOWN_OCCUPIED;
+    s.abs_err = r.abs_err, s.rel_err = r.rel_err;
+    s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
+    return s;
+}
+
+opx_distance_result result_to_abi(const DistanceOutcome &o, const DistanceSettings &s, const SensorOctree &tree) {
+    opx_distance_result out = OPX_DISTANCE_RESULT_INIT;
+    out.found = o.found ? 1 : 0;
+    out.narrow_tests = o.narrow_tests;
+    if (!o.found) {
+        out.distance = s.cutoff;
+        return out;
+    }
+    const double res = tree.params().resolution;
+    out.collided = o.distance <= 0.0 ? 1 : 0;
+    out.cell_class = o.cell_unknown ? kUnknown : tree.classify_log_odds(o.cell_log_odds);
+    out.link = o.link, out.shape = o.shape;
+    out.distance = o.distance;
+    for (int axis = 0; axis < 3; ++axis) {
+        out.point_on_link[axis] = o.on_link[axis];
+        out.point_on_cell[axis] = o.on_cell[axis];
+        out.cell_center[axis] = o.cell.center(axis, res);
+    }
+    out.cell_size = o.cell.size(res);
+    out.cell_probability = o.cell_unknown ? 0.5 : probability_from_log_odds(o.cell_log_odds);
+    return out;
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_distance_request_init(opx_distance_request *request, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(request, size, opx_distance_request(OPX_DISTANCE_REQUEST_INIT), "request");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_distance_result_init(opx_distance_result *result, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(result, size, opx_distance_result(OPX_DISTANCE_RESULT_INIT), "result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                      const opx_distance_request *request, opx_distance_result *out_result) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(tree, "tree");
+        require_pointer(links, "links");
+        require_pointer(out_result, "out_result");
+        require_struct_size(out_result->struct_size, "out_result");
+        opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const DistanceSettings settings = read_distance_request(merged, *tree->tree);
+        query->link_distances.clear();
+        const DistanceOutcome outcome =
+            merged.per_link ? query->distance.run_per_link(*tree->tree, links->links, settings, query->link_distances)
+                            : query->distance.run(*tree->tree, links->links, settings);
+        write_versioned(out_result, result_to_abi(outcome, settings, *tree->tree), "out_result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_get_link_distances(const opx_query *query, double *out_distances,
+                                                size_t capacity, size_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(out_count, "out_count");
+        if (capacity > 0) require_pointer(out_distances, "out_distances");
+        const std::vector<double> &d = query->link_distances;
+        *out_count = d.size();
+        std::copy(d.begin(), d.begin() + std::min(capacity, d.size()), out_distances);
+        if (d.size() > capacity)
+            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,
+                           format("out_distances holds %zu values, %zu links need one each", capacity, d.size()));
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,137 @@
+#include "query/direct_distance.hpp"
+
+#include "query/shape_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace octoprox {
+
+Aabb DirectDistance::box_of(const CellKey &key) const {
+    const double r = view_->resolution();
+    const Vec3 center(key.center(0, r), key.center(1, r), key.center(2, r));
+    return Aabb::from_center(center, Vec3::Constant(0.5 * key.size(r)));
+}
+
+void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
+    links_ = &links, settings_ = settings;
+    best_ = DistanceOutcome();
+    bound_ = settings.cutoff;
+    (void)tree;
+}
+
+DistanceOutcome DirectDistance::run(const SensorOctree &tree, const LinkSet &links,
+                                    const DistanceSettings &settings) {
+    const OctreeView view = tree.view();
+    view_ = &view;
+    start(tree, links, settings);
+    only_link_ = -1;
+    if (!links.tree().empty()) search(links.tree().root());
+    view_ = nullptr;
+    return best_;
+}
+
+// Per link: one search per link, each bounded by that link's own best, so
+// no link's minimum is pruned away by another link's.
+DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const LinkSet &links,
+                                             const DistanceSettings &settings,
+                                             std::vector<double> &per_link) {
+    const OctreeView view = tree.view();
+    view_ = &view;
+    per_link.assign(links.link_count(), std::numeric_limits<double>::infinity());
+    DistanceOutcome overall;
+    uint64_t tests = 0;
+    for (uint32_t link = 0; link < links.link_count(); ++link) {
+        start(tree, links, settings);
+        only_link_ = static_cast<int32_t>(link);
+        if (!links.tree().empty()) search(links.tree().root());
+        tests += best_.narrow_tests;
+        if (best_.found) per_link[link] = best_.distance;
+        if (best_.found && (!overall.found || best_.distance < overall.distance)) overall = best_;
+    }
+    overall.narrow_tests = tests;
+    view_ = nullptr;
+    return overall;
+}
+
+void DirectDistance::search(int32_t robot_node) {
+    const Cell root{view_->root(), CellKey{}};
+    if (root.node == nullptr && !settings_.unknown_occupied) return;
+    const Aabb &robot = links_->tree().node(robot_node).box;
+    recurse(root, robot_node, std::sqrt(robot.squared_distance(box_of(root.key))));
+}
+
+// Prune when the pair cannot bring the answer below the bound, or not by
+// more than the allowed error.
+bool DirectDistance::can_prune(double lower) const {
+    if (lower >= bound_) return true;
+    if (!best_.found) return false;
+    const double slack = std::max(settings_.abs_err, settings_.rel_err * best_.distance);
+    return bound_ - lower <= slack;
+}
+
+bool DirectDistance::is_obstacle(const Cell &cell) const {
+    if (cell.node == nullptr) return settings_.unknown_occupied;
+    return view_->log_odds(cell.node) >= settings_.threshold_log_odds;
+}
+
+void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower) {
+    if (can_prune(lower) || bound_ <= 0.0) return;
+    const AabbTreeNode &robot = links_->tree().node(robot_node);
+    const bool octree_leaf = cell.node == nullptr || !view_->has_children(cell.node);
+    if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot_node);
+    const double resolution = view_->resolution();
+    if (robot.is_leaf() || (!octree_leaf && cell.key.size(resolution) > robot.box.longest_edge()))
+        return descend_octree(cell, robot_node);
+    // Nearer robot child first.
+    const Aabb cell_box = box_of(cell.key);
+    int32_t first = robot.left, second = robot.right;
+    double lower_first = std::sqrt(links_->tree().node(first).box.squared_distance(cell_box));
+    double lower_second = std::sqrt(links_->tree().node(second).box.squared_distance(cell_box));
+    if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
+    recurse(cell, first, lower_first);
+    recurse(cell, second, lower_second);
+}
+
+// Children sorted by their lower bound, nearest first; children without
+// obstacles (max log-odds below the threshold, or unknown when unknown is
+// free) are skipped.
+void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
+    const Aabb &robot = links_->tree().node(robot_node).box;
+    Child children[8];
+    int count = 0;
+    for (int i = 0; i < 8; ++i) {
+        const Cell child{view_->child(cell.node, i), cell.key.child(i)};
+        if (child.node == nullptr ? !settings_.unknown_occupied
+                                  : (!settings_.unknown_occupied &&
+                                     view_->log_odds(child.node) < settings_.threshold_log_odds))
+            continue;
+        // Insertion sort: at most 8 children.
+        const Child entry{child, std::sqrt(robot.squared_distance(box_of(child.key)))};
+        int at = count++;
+        for (; at > 0 && children[at - 1].lower > entry.lower; --at) children[at] = children[at - 1];
+        children[at] = entry;
+    }
+    for (int i = 0; i < count; ++i) recurse(children[i].cell, robot_node, children[i].lower);
+}
+
+void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {
+    if (!is_obstacle(cell)) return;
+    const PlacedShape &shape = links_->placed()[links_->tree().node(robot_node).item];
+    if (shape.box.empty()) return;  // a disabled link
+    if (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_)) return;
+    const Aabb box = box_of(cell.key);
+    ShapeCellDistance d;
+    if (!shape_cell_distance(shape, box.center(), box.half_extent(), bound_, d, best_.narrow_tests)) return;
+    best_.found = true;
+    best_.distance = d.distance;
+    best_.on_link = d.on_shape;
+    best_.on_cell = d.on_cell;
+    best_.link = shape.link, best_.shape = shape.shape;
+    best_.cell = cell.key;
+    best_.cell_unknown = cell.node == nullptr;
+    best_.cell_log_odds = cell.node == nullptr ? 0.0f : view_->log_odds(cell.node);
+    bound_ = d.distance;
+}
+
+}  // namespace octoprox

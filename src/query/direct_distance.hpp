@@ -1,0 +1,50 @@
+// The direct engine's distance query: nearest-first branch and bound over
+// the octree x the robot's shape BVH, with lower bounds from box distances
+// in the octree's (map) frame and exact leaf distances.
+#pragma once
+
+#include "octree/sensor_octree.hpp"
+#include "query/distance_types.hpp"
+#include "robot/linkset.hpp"
+
+#include <vector>
+
+namespace octoprox {
+
+class DirectDistance {
+public:
+    // Minimum distance between the enabled links and the obstacle cells.
+    DistanceOutcome run(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
+    // The same, and the minimum of every link in per_link (infinity for a
+    // link with nothing within the cutoff, or disabled).
+    DistanceOutcome run_per_link(const SensorOctree &tree, const LinkSet &links,
+                                 const DistanceSettings &settings, std::vector<double> &per_link);
+
+private:
+    struct Cell {
+        OctreeView::NodeRef node;  // nullptr: unknown space
+        CellKey key;
+    };
+    struct Child {
+        Cell cell;
+        double lower;
+    };
+
+    void start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
+    void search(int32_t robot_node);
+    void recurse(const Cell &cell, int32_t robot_node, double lower);
+    void descend_octree(const Cell &cell, int32_t robot_node);
+    void test_leaf_pair(const Cell &cell, int32_t robot_node);
+    bool can_prune(double lower) const;
+    bool is_obstacle(const Cell &cell) const;
+    Aabb box_of(const CellKey &key) const;
+
+    const OctreeView *view_ = nullptr;
+    const LinkSet *links_ = nullptr;
+    DistanceSettings settings_;
+    DistanceOutcome best_;
+    double bound_ = 0.0;             // prune at or beyond this distance
+    int32_t only_link_ = -1;         // per-link mode: the link searched
+};
+
+}  // namespace octoprox
