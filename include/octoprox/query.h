@@ -46,11 +46,26 @@ typedef struct opx_collision_request {
     /* 0: answer yes/no only; 1 (default): stop at the first contact and
      * report it; N: collect up to N contacts (UINT32_MAX: all). */
     uint32_t max_contacts;
-    int32_t reserved0;
+    /* 1: also the cost of uncertain and unknown space (paper IV.C): boxes
+     * where links overlap cells that are neither known free nor obstacles
+     * (uncertain: octree free_threshold <= p < occupancy threshold), and
+     * unknown space inside the region below.  Each box is a cell
+     * intersected with the link's bounding box, one per (link, cell); its
+     * cost is probability x volume.  Obstacles hit are still contacts. */
+    int32_t compute_cost;
+    uint32_t max_cost_boxes;    /* the costliest boxes kept (default 16) */
+    uint32_t reserved0;
+    double unknown_probability; /* probability given to unknown space (0.5) */
+    /* Where unknown space counts (map frame).  When region_min is not below
+     * region_max on every axis (the default zeros): the bounds of the
+     * observed cells. */
+    double region_min[3];
+    double region_max[3];
 } opx_collision_request;
 
 #define OPX_COLLISION_REQUEST_INIT \
-    {sizeof(opx_collision_request), OPX_UNKNOWN_FREE, 0.0, 1, 0}
+    {sizeof(opx_collision_request), OPX_UNKNOWN_FREE, 0.0, 1, 0, 16, 0, 0.5, \
+     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
 OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size);
 
 typedef struct opx_collision_result {
@@ -60,9 +75,12 @@ typedef struct opx_collision_result {
     int32_t truncated;      /* 1 when contacts were left out (max_contacts reached) */
     uint32_t reserved0;
     uint64_t narrow_tests;  /* exact shape-vs-cell tests run (a cost measure) */
+    double total_cost;      /* sum of probability x volume over ALL cost boxes (m^3) */
+    uint64_t cost_box_count; /* boxes held by the query (opx_query_get_cost_box) */
+    uint64_t cost_boxes_found; /* all boxes; the held ones are the costliest */
 } opx_collision_result;
 
-#define OPX_COLLISION_RESULT_INIT {sizeof(opx_collision_result), 0, 0, 0, 0, 0}
+#define OPX_COLLISION_RESULT_INIT {sizeof(opx_collision_result), 0, 0, 0, 0, 0, 0.0, 0, 0}
 OPX_API opx_status opx_collision_result_init(opx_collision_result *result, size_t size);
 
 /* One contact: a shape of a link touching an obstacle cell.  Cells are
@@ -82,6 +100,24 @@ typedef struct opx_contact {
 #define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0}
 OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size);
 
+/* A box of uncertain or unknown space overlapped by a link. */
+typedef struct opx_cost_box {
+    uint32_t struct_size;
+    uint32_t link;
+    int32_t cell_class;     /* OPX_CELL_UNCERTAIN or OPX_CELL_UNKNOWN */
+    uint32_t reserved0;
+    double min[3];          /* the box, map frame, metres */
+    double max[3];
+    double probability;     /* the cell's (unknown: the request's) */
+    double cost;            /* probability x volume, m^3 */
+    double cell_center[3];  /* the whole cell the box lies in */
+    double cell_size;
+} opx_cost_box;
+
+#define OPX_COST_BOX_INIT {sizeof(opx_cost_box), 0, 0, 0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, \
+    0.0, 0.0, {0.0, 0.0, 0.0}, 0.0}
+OPX_API opx_status opx_cost_box_init(opx_cost_box *box, size_t size);
+
 /*
  * Does the link set (enabled links, padding included, at their current
  * poses) collide with the octree?  request may be NULL (defaults).  The
@@ -95,6 +131,10 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree,
 /* Contact `index` (< contact_count) of the last collision query. */
 OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index,
                                          opx_contact *out_contact);
+/* Cost box `index` (< cost_box_count) of the last collision query,
+ * costliest first. */
+OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index,
+                                          opx_cost_box *out_box);
 
 /* ---- Distance ---------------------------------------------------------- */
 

@@ -23,6 +23,9 @@ struct opx_query {
     int32_t engine = OPX_ENGINE_DIRECT;
     octoprox::DirectCollider direct;
     std::vector<octoprox::Contact> contacts;  // of the last collision query
+    std::vector<octoprox::CostBox> cost_boxes;
+    std::vector<octoprox::Aabb> link_boxes;   // scratch
+    double resolution = 0.0;                  // of the octree of the last query
     octoprox::DirectDistance distance;
     std::vector<double> link_distances;       // of the last per-link distance query
 };

@@ -24,7 +24,37 @@ CollisionSettings read_collision_request(const opx_collision_request *request, c
         static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
     settings.unknown_occupied = merged.unknown_policy == OPX_UNKNOWN_OCCUPIED;
     settings.max_contacts = merged.max_contacts;
+    settings.cost = merged.compute_cost != 0;
+    if (settings.cost) {
+        const double p = merged.unknown_probability;
+        if (!(p >= 0.0 && p <= 1.0))
+            throw_invalid(format("request->unknown_probability is %g; a probability in [0, 1] is needed", p));
+        for (int axis = 0; axis < 3; ++axis)
+            if (!std::isfinite(merged.region_min[axis]) || !std::isfinite(merged.region_max[axis]))
+                throw_invalid("request->region_min/region_max hold a non-finite value");
+        settings.unknown_probability = p;
+        settings.max_cost_boxes = merged.max_cost_boxes;
+        settings.free_log_odds = static_cast<float>(log_odds(tree.params().free_threshold));
+        const Aabb region{Vec3(merged.region_min[0], merged.region_min[1], merged.region_min[2]),
+                          Vec3(merged.region_max[0], merged.region_max[1], merged.region_max[2])};
+        settings.region = (region.lo.array() < region.hi.array()).all() ? region : tree.known_bounds();
+    }
     return settings;
+}
+
+opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
+    opx_cost_box out = OPX_COST_BOX_INIT;
+    out.link = b.link;
+    out.cell_class = b.cell_class;
+    for (int axis = 0; axis < 3; ++axis) {
+        out.min[axis] = b.box.lo[axis];
+        out.max[axis] = b.box.hi[axis];
+        out.cell_center[axis] = b.cell.center(axis, resolution);
+    }
+    out.probability = b.probability;
+    out.cost = b.cost;
+    out.cell_size = b.cell.size(resolution);
+    return out;
 }
 
 opx_contact contact_to_abi(const Contact &c) {
@@ -64,6 +94,26 @@ OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size) {
     });
 }
 
+OPX_API opx_status opx_cost_box_init(opx_cost_box *box, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(box, size, opx_cost_box(OPX_COST_BOX_INIT), "box");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, opx_cost_box *out_box) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(out_box, "out_box");
+        require_struct_size(out_box->struct_size, "out_box");
+        if (index >= query->cost_boxes.size())
+            throw_invalid(format("index %zu is beyond the %zu cost boxes of the last query", index,
+                                 query->cost_boxes.size()));
+        write_versioned(out_box, cost_box_to_abi(query->cost_boxes[index], query->resolution), "out_box");
+        return OPX_OK;
+    });
+}
+
 OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out) {
     if (out != nullptr) *out = nullptr;
     return guard(__func__, [&] {
@@ -91,12 +141,21 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         require_pointer(out_result, "out_result");
         require_struct_size(out_result->struct_size, "out_result");
         const CollisionSettings settings = read_collision_request(request, *tree->tree);
+        query->resolution = tree->tree->params().resolution;
         const CollisionOutcome outcome = query->direct.collide(*tree->tree, links->links, settings, query->contacts);
         opx_collision_result result = OPX_COLLISION_RESULT_INIT;
         result.collided = outcome.collided ? 1 : 0;
         result.contact_count = query->contacts.size();
         result.truncated = outcome.truncated ? 1 : 0;
         result.narrow_tests = outcome.narrow_tests;
+        query->cost_boxes.clear();
+        if (settings.cost) {
+            link_boxes(links->links, query->link_boxes);
+            const CostSummary cost = query->direct.cost().finish(query->link_boxes, settings.max_cost_boxes, query->cost_boxes);
+            result.total_cost = cost.total;
+            result.cost_boxes_found = cost.box_count;
+            result.cost_box_count = query->cost_boxes.size();
+        }
         write_versioned(out_result, result, "out_result");
         return OPX_OK;
     });

@@ -60,6 +60,24 @@ SensorOctree::SensorOctree(const OctreeParams &params)
 SensorOctree::SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::OcTree> tree)
     : params_(params), tree_(std::move(tree)) {
     apply_params();
+    recompute_known_bounds();
+}
+
+void SensorOctree::recompute_known_bounds() {
+    known_bounds_ = Aabb();
+    const TreeStats s = stats();
+    if (s.has_known)
+        known_bounds_ = Aabb{Vec3(s.known_min[0], s.known_min[1], s.known_min[2]),
+                             Vec3(s.known_max[0], s.known_max[1], s.known_max[2])};
+}
+
+void SensorOctree::grow_known_bounds(const octomap::KeySet &keys) {
+    const double res = params_.resolution;
+    for (const octomap::OcTreeKey &key : keys) {
+        const Vec3 lo((key[0] - kKeyCenter) * res, (key[1] - kKeyCenter) * res, (key[2] - kKeyCenter) * res);
+        known_bounds_.grow(lo);
+        known_bounds_.grow(Vec3(lo.array() + res));
+    }
 }
 
 SensorOctree::~SensorOctree() = default;
@@ -85,7 +103,10 @@ bool SensorOctree::contains(const Vec3 &point) const {
     return tree_->coordToKeyChecked(point.x(), point.y(), point.z(), key);
 }
 
-void SensorOctree::clear() { tree_->clear(); }
+void SensorOctree::clear() {
+    tree_->clear();
+    known_bounds_ = Aabb();
+}
 
 // Walks from the root towards the point's finest cell; stops at the leaf
 // holding it, or at the first missing child (unknown space).

@@ -3,15 +3,20 @@
 // unknown) and sensor-frame insertion.
 #pragma once
 
+#include "geometry/aabb.hpp"
 #include "geometry/pose.hpp"
 #include "octree/octree_params.hpp"
 #include "octree/octree_view.hpp"
+
+#include <octomap/OcTreeKey.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 
-namespace octomap { class OcTree; }
+namespace octomap {
+class OcTree;
+}
 
 namespace octoprox {
 
@@ -77,9 +82,14 @@ public:
     CellInfo classify(const Vec3 &point) const;  // point inside the cube
     TreeStats stats() const;
     void clear();
+    // Bounds of every observed cell, kept up to date by each change, so
+    // queries can bound unknown space without a pass over the map.
+    const Aabb &known_bounds() const { return known_bounds_; }
 
 private:
     void apply_params();
+    void grow_known_bounds(const octomap::KeySet &keys);
+    void recompute_known_bounds();
 
     OctreeParams params_;
     std::unique_ptr<octomap::OcTree> tree_;
@@ -87,6 +97,7 @@ private:
     // exactly as OctoMap's isNodeOccupied does.
     float occupied_log_odds_ = 0.0f;
     float free_log_odds_ = 0.0f;
+    Aabb known_bounds_;
 };
 
 }  // namespace octoprox

@@ -1,6 +1,8 @@
 // Settings and outputs of collision queries, shared by the engines.
 #pragma once
 
+#include "geometry/aabb.hpp"
+
 #include <cstdint>
 #include <vector>
 
@@ -10,6 +12,12 @@ struct CollisionSettings {
     float threshold_log_odds = 0.0f;  // obstacle when a cell's log-odds >= this
     bool unknown_occupied = false;
     uint32_t max_contacts = 1;        // 0: yes/no only
+    // Cost of uncertain and unknown space (paper IV.C).
+    bool cost = false;
+    float free_log_odds = 0.0f;       // uncertain when free <= log-odds < threshold
+    double unknown_probability = 0.5;
+    uint32_t max_cost_boxes = 16;     // the costliest kept
+    Aabb region;                      // where unknown space counts
 };
 
 struct Contact {

@@ -5,6 +5,7 @@
 
 #include "octree/sensor_octree.hpp"
 #include "query/collision_types.hpp"
+#include "query/cost_collector.hpp"
 #include "robot/linkset.hpp"
 
 namespace octoprox {
@@ -15,6 +16,8 @@ public:
     // so warm queries allocate nothing).
     CollisionOutcome collide(const SensorOctree &tree, const LinkSet &links,
                              const CollisionSettings &settings, std::vector<Contact> &contacts);
+    // With settings.cost: the (link, cell) pairs of the last query.
+    CostCollector &cost() { return cost_; }
 
 private:
     // One octree cube: a node (nullptr for unknown space) and its key.
@@ -26,8 +29,11 @@ private:
     void recurse(const Cell &cell, int32_t robot_node);
     void descend_octree(const Cell &cell, int32_t robot_node);
     void test_leaf_pair(const Cell &cell, int32_t robot_node);
-    bool is_obstacle_leaf(const Cell &cell) const;
+    bool skip_child(const Cell &child) const;
+    void test_obstacle(const Cell &cell, const PlacedShape &shape, const Aabb &box);
+    void test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box);
     void record(const Cell &cell, const PlacedShape &shape);
+    void settle_obstacles();
 
     const OctreeView *view_ = nullptr;
     const SensorOctree *tree_ = nullptr;
@@ -35,7 +41,9 @@ private:
     CollisionSettings settings_;
     std::vector<Contact> *contacts_ = nullptr;
     CollisionOutcome outcome_;
+    CostCollector cost_;
     bool done_ = false;
+    bool obstacles_settled_ = false;  // no more contact information needed
 };
 
 }  // namespace octoprox

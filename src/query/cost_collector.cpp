@@ -1,0 +1,60 @@
+#include "query/cost_collector.hpp"
+
+#include "robot/linkset.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace octoprox {
+namespace {
+
+Aabb intersection(const Aabb &a, const Aabb &b) { return Aabb{a.lo.cwiseMax(b.lo), a.hi.cwiseMin(b.hi)}; }
+
+double volume(const Aabb &b) { return (b.hi - b.lo).cwiseMax(0.0).prod(); }
+
+auto order_key(uint32_t link, const CellKey &c) {
+    return std::make_tuple(link, c.depth, c.key[0], c.key[1], c.key[2]);
+}
+
+}  // namespace
+
+void CostCollector::add(uint32_t link, const CellKey &cell, int cell_class, double probability,
+                        const Aabb &region) {
+    pairs_.push_back(Pair{link, cell, cell_class, probability, region});
+}
+
+CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out) {
+    // One box per (link, cell), however many shapes of the link touch it.
+    std::sort(pairs_.begin(), pairs_.end(), [](const Pair &a, const Pair &b) {
+        return order_key(a.link, a.cell) < order_key(b.link, b.cell);
+    });
+    pairs_.erase(std::unique(pairs_.begin(), pairs_.end(),
+                             [](const Pair &a, const Pair &b) {
+                                 return order_key(a.link, a.cell) == order_key(b.link, b.cell);
+                             }),
+                 pairs_.end());
+    CostSummary summary;
+    out.clear();
+    for (const Pair &p : pairs_) {
+        CostBox box;
+        box.box = intersection(p.region, link_boxes[p.link]);
+        box.probability = p.probability;
+        box.cost = p.probability * volume(box.box);
+        box.link = p.link, box.cell_class = p.cell_class, box.cell = p.cell;
+        summary.total += box.cost;
+        out.push_back(box);
+    }
+    summary.box_count = out.size();
+    const size_t kept = std::min<size_t>(keep, out.size());
+    std::partial_sort(out.begin(), out.begin() + kept, out.end(),
+                      [](const CostBox &a, const CostBox &b) { return a.cost > b.cost; });
+    out.resize(kept);
+    return summary;
+}
+
+void link_boxes(const LinkSet &links, std::vector<Aabb> &out) {
+    out.assign(links.link_count(), Aabb());
+    for (const PlacedShape &shape : links.placed()) out[shape.link].grow(shape.box);
+}
+
+}  // namespace octoprox

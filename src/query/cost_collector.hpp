@@ -1,0 +1,54 @@
+// Cost of uncertain and unknown space (paper IV.C, Fig. 3): the (link,
+// cell) pairs where a link overlaps a cell that is neither known free nor
+// an obstacle, turned into boxes (cell intersected with the link's bounding
+// box), each with the cell's probability and cost = probability x volume.
+#pragma once
+
+#include "geometry/aabb.hpp"
+#include "octree/octree_view.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace octoprox {
+
+struct CostBox {
+    Aabb box;  // map frame
+    double probability = 0.0;
+    double cost = 0.0;
+    uint32_t link = 0;
+    int cell_class = 0;
+    CellKey cell;
+};
+
+struct CostSummary {
+    double total = 0.0;       // sum over all boxes
+    uint64_t box_count = 0;   // all boxes (the kept ones are the largest)
+};
+
+class CostCollector {
+public:
+    void clear() { pairs_.clear(); }
+    // `region` is the part of the cell that counts (the cell itself, or
+    // its intersection with the region of interest for unknown space).
+    void add(uint32_t link, const CellKey &cell, int cell_class, double probability, const Aabb &region);
+    // Dedupes the pairs, builds the boxes against each link's bounding box,
+    // keeps the `keep` costliest in `out` (costliest first).
+    CostSummary finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out);
+
+private:
+    struct Pair {
+        uint32_t link;
+        CellKey cell;
+        int cell_class;
+        double probability;
+        Aabb region;
+    };
+    std::vector<Pair> pairs_;
+};
+
+// Bounding box of each link (union of its enabled shapes' padded boxes).
+class LinkSet;
+void link_boxes(const LinkSet &links, std::vector<Aabb> &out);
+
+}  // namespace octoprox
