@@ -3,15 +3,6 @@
 #include "query/narrow_phase.hpp"
 
 namespace octoprox {
-namespace {
-
-Aabb cell_box(const CellKey &key, double resolution) {
-    const double half = 0.5 * key.size(resolution);
-    const Vec3 center(key.center(0, resolution), key.center(1, resolution), key.center(2, resolution));
-    return Aabb::from_center(center, Vec3::Constant(half));
-}
-
-}  // namespace
 
 CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet &links,
                                          const CollisionSettings &settings,
@@ -24,27 +15,49 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
     done_ = false;
     obstacles_settled_ = false;
     if (!links.tree().empty()) {
-        const Cell root{view.root(), CellKey{}};
+        const Cell root = root_cell(view);
         // An empty map is one unknown cube.
-        if (root.node != nullptr || !skip_child(root)) recurse(root, links.tree().root());
+        if ((root.node != nullptr || !skip_child(root)) &&
+            links.tree().node(links.tree().root()).box.overlaps(root.box))
+            recurse(root, links.tree().root());
     }
     view_ = nullptr;
     return outcome_;
 }
 
-// Algorithm 1: prune by box overlap, descend the larger of the two nodes
-// (both measured by their longest edge), test leaf pairs exactly.
+// Algorithm 1: descend the larger of the two nodes (both measured by their
+// longest edge), test leaf pairs exactly.  Boxes are tested before a call,
+// so every call has an overlapping pair.
 void DirectCollider::recurse(const Cell &cell, int32_t robot_node) {
     if (done_) return;
-    const AabbTreeNode &robot = links_->tree().node(robot_node);
-    const double resolution = view_->resolution();
-    if (!robot.box.overlaps(cell_box(cell.key, resolution))) return;
+    const AabbTree &tree = links_->tree();
+    const AabbTreeNode &robot = tree.node(robot_node);
     const bool octree_leaf = cell.node == nullptr || !view_->has_children(cell.node);
     if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot_node);
-    if (robot.is_leaf() || (!octree_leaf && cell.key.size(resolution) > robot.box.longest_edge()))
+    // Descending the robot splits one box into two; descending the octree
+    // splits one cube into eight, each half as wide: favour the robot until
+    // the cube is twice the robot node's size (measured: fewer visits).
+    if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
-    recurse(cell, robot.left);
-    recurse(cell, robot.right);
+    if (tree.node(robot.left).box.overlaps(cell.box)) recurse(cell, robot.left);
+    if (tree.node(robot.right).box.overlaps(cell.box)) recurse(cell, robot.right);
+}
+
+// Only the children the robot node's box reaches, skipping those that hold
+// nothing the query looks for.
+void DirectCollider::descend_octree(const Cell &cell, int32_t robot_node) {
+    const AabbTreeNode &robot = links_->tree().node(robot_node);
+    const Vec3 mid = mid_planes(cell, view_->resolution());
+    const unsigned reached = children_overlapping(robot.box, mid);
+    // A single shape is culled by its own tighter test, not only its box.
+    const PlacedShape *shape = robot.is_leaf() ? &links_->placed()[robot.item] : nullptr;
+    for (unsigned bits = reached; bits != 0 && !done_; bits &= bits - 1) {
+        const int i = __builtin_ctz(bits);
+        const Cell child = child_cell(cell, view_->child(cell.node, i), i, mid);
+        if (skip_child(child)) continue;
+        if (shape != nullptr && !shape_may_touch(*shape, child.box)) continue;
+        recurse(child, robot_node);
+    }
 }
 
 // Which octree children can hold nothing the query looks for.  An inner
@@ -53,7 +66,7 @@ void DirectCollider::recurse(const Cell &cell, int32_t robot_node) {
 // only when it is occupied, or, for cost, inside the region.
 bool DirectCollider::skip_child(const Cell &child) const {
     if (settings_.unknown_occupied) return false;
-    const bool in_region = settings_.cost && settings_.region.overlaps(cell_box(child.key, view_->resolution()));
+    const bool in_region = settings_.cost && settings_.region.overlaps(child.box);
     if (child.node == nullptr) return !in_region;
     const float l = view_->log_odds(child.node);
     if (l >= settings_.threshold_log_odds) return false;
@@ -61,17 +74,11 @@ bool DirectCollider::skip_child(const Cell &child) const {
     return l < settings_.free_log_odds && !in_region;
 }
 
-void DirectCollider::descend_octree(const Cell &cell, int32_t robot_node) {
-    for (int i = 0; i < 8 && !done_; ++i) {
-        const Cell child{view_->child(cell.node, i), cell.key.child(i)};
-        if (!skip_child(child)) recurse(child, robot_node);
-    }
-}
 
 void DirectCollider::test_leaf_pair(const Cell &cell, int32_t robot_node) {
     const PlacedShape &shape = links_->placed()[links_->tree().node(robot_node).item];
     if (shape.box.empty()) return;  // a disabled link
-    const Aabb box = cell_box(cell.key, view_->resolution());
+    const Aabb &box = cell.box;
     if (cell.node == nullptr) {
         if (settings_.unknown_occupied) test_obstacle(cell, shape, box);
         else if (settings_.cost) test_cost(cell, shape, box);

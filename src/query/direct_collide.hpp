@@ -6,6 +6,7 @@
 #include "octree/sensor_octree.hpp"
 #include "query/collision_types.hpp"
 #include "query/cost_collector.hpp"
+#include "query/octree_cell.hpp"
 #include "robot/linkset.hpp"
 
 namespace octoprox {
@@ -20,11 +21,7 @@ public:
     CostCollector &cost() { return cost_; }
 
 private:
-    // One octree cube: a node (nullptr for unknown space) and its key.
-    struct Cell {
-        OctreeView::NodeRef node;
-        CellKey key;
-    };
+    using Cell = OctreeCell;
 
     void recurse(const Cell &cell, int32_t robot_node);
     void descend_octree(const Cell &cell, int32_t robot_node);

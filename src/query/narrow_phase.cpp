@@ -43,7 +43,41 @@ bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, con
     return false;
 }
 
+// Oriented box (centre, axes, half) against an axis-aligned box, on the
+// face axes of both: conservative, since the 9 edge axes are not tried.
+bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half,
+                            const Aabb &box) {
+    const Vec3 box_half = box.half_extent();
+    const Vec3 offset = center - box.center();
+    const Eigen::Matrix3d abs_axes = axes.cwiseAbs();
+    const Vec3 reach = abs_axes * half;  // the oriented box's half extents along x, y, z
+    if (((offset.cwiseAbs() - box_half - reach).array() > kTouchTolerance).any()) return false;
+    const Vec3 local = axes.transpose() * offset;
+    const Vec3 box_reach = abs_axes.transpose() * box_half;
+    return !((local.cwiseAbs() - half - box_reach).array() > kTouchTolerance).any();
+}
+
 }  // namespace
+
+bool shape_may_touch(const PlacedShape &shape, const Aabb &box) {
+    const Convex &core = shape.core;
+    const double inflation = shape.inflation;
+    switch (shape.kind) {
+    case ShapeKind::kSphere: {
+        const double limit = inflation + kTouchTolerance;
+        return point_box_distance2(core.center, box.center(), box.half_extent()) <= limit * limit;
+    }
+    case ShapeKind::kBox:
+        return oriented_box_may_touch(core.center, core.axes, core.half + Vec3::Constant(inflation), box);
+    case ShapeKind::kCylinder:
+        return oriented_box_may_touch(core.center, core.axes, core.half + Vec3::Constant(inflation), box);
+    case ShapeKind::kCapsule: {
+        const double half_length = 0.5 * (core.v[1] - core.v[0]).norm();
+        return oriented_box_may_touch(core.center, core.axes, Vec3(inflation, inflation, half_length + inflation), box);
+    }
+    default: return true;
+    }
+}
 
 bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const Vec3 &cell_half,
                         uint64_t &narrow_tests) {

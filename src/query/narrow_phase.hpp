@@ -16,4 +16,10 @@ constexpr double kTouchTolerance = 1e-9;
 bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const Vec3 &cell_half,
                         uint64_t &narrow_tests);
 
+// A cheap conservative test for octree descent: false only when the shape
+// surely does not touch the box.  Tighter than the shape's bounding box
+// for spheres (true distance) and for rotated boxes, cylinders and
+// capsules (their oriented box, by the 6 face axes).
+bool shape_may_touch(const PlacedShape &shape, const Aabb &box);
+
 }  // namespace octoprox
