@@ -1,0 +1,20 @@
+// The paper's tables, one source file each (table2.cpp, ...).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "options.hpp"
+#include "report.hpp"
+
+namespace paper_tables {
+
+// Each prints its tables, appends its rows, and returns 0, or 1 when a
+// correctness check failed (the pipelines disagree: "MISMATCH").
+
+// Table II: collision, 300 objects against a 7,784-cell octree; pipelines
+// FCL boxes + DynamicAABBTree, FCL octree, octoprox direct; scenes H
+// (hits) and F (free); variants (a) primitives and (b) meshes.
+int run_table2(const BenchOptions &options, const std::string &cpu, std::vector<TableRow> &rows);
+
+}  // namespace paper_tables
