@@ -33,7 +33,9 @@ OPX_API opx_status opx_query_options_init(opx_query_options *options, size_t siz
 OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out);
 OPX_API void opx_query_destroy(opx_query *query);
 
-/* What unknown (never observed) space is during a query. */
+/* What unknown (never observed) space is during a query.  Only the map
+ * cube (+-32768 x resolution on each axis) is searched: space outside it
+ * is neither an obstacle nor reported, whatever the policy. */
 #define OPX_UNKNOWN_FREE 0     /* optimistic, as MoveIt/FCL (default) */
 #define OPX_UNKNOWN_OCCUPIED 1 /* safe: a link must lie in observed space */
 
@@ -72,7 +74,10 @@ typedef struct opx_collision_result {
     uint32_t struct_size;
     int32_t collided;       /* 1 when some enabled link touches an obstacle cell */
     uint64_t contact_count; /* contacts held by the query (opx_query_get_contact) */
-    int32_t truncated;      /* 1 when contacts were left out (max_contacts reached) */
+    /* 1 when a contact beyond the first max_contacts was found and left
+     * out.  With max_contacts 0 or 1 the search stops at the first contact,
+     * so truncated stays 0 although more contacts may exist. */
+    int32_t truncated;
     uint32_t reserved0;
     uint64_t narrow_tests;  /* exact shape-vs-cell tests run (a cost measure) */
     double total_cost;      /* sum of probability x volume over ALL cost boxes (m^3) */
@@ -90,8 +95,10 @@ typedef struct opx_contact {
     uint32_t struct_size;
     uint32_t link;          /* index in the link set */
     uint32_t shape;         /* index within the link */
-    int32_t cell_class;     /* OPX_CELL_OCCUPIED, or OPX_CELL_UNKNOWN with
-                             * OPX_UNKNOWN_OCCUPIED */
+    int32_t cell_class;     /* the cell's class in the octree (OPX_CELL_OCCUPIED;
+                             * uncertain or free when the request's threshold is
+                             * below the octree's; OPX_CELL_UNKNOWN with
+                             * OPX_UNKNOWN_OCCUPIED) */
     double cell_center[3];  /* map frame, metres */
     double cell_size;       /* edge, metres */
     double cell_probability; /* 0.5 for unknown cells */
