@@ -63,11 +63,15 @@ typedef struct opx_collision_request {
      * observed cells. */
     double region_min[3];
     double region_max[3];
+    /* 1: each contact also gets its penetration depth, normal and point
+     * (exact for polytopes: EPA on the Minkowski difference). */
+    int32_t compute_penetration;
+    int32_t reserved1;
 } opx_collision_request;
 
 #define OPX_COLLISION_REQUEST_INIT \
     {sizeof(opx_collision_request), OPX_UNKNOWN_FREE, 0.0, 1, 0, 16, 0, 0.5, \
-     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, 0}
 OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size);
 
 typedef struct opx_collision_result {
@@ -102,9 +106,18 @@ typedef struct opx_contact {
     double cell_center[3];  /* map frame, metres */
     double cell_size;       /* edge, metres */
     double cell_probability; /* 0.5 for unknown cells */
+    /* With compute_penetration (else zeros): how deep the padded shape is
+     * in the cell (metres, >= 0; 0 when only touching), the unit direction
+     * it went in (moving the link by -depth * normal separates the pair),
+     * and the contact point: midway between the shape's deepest point and
+     * where it leaves the cell, map frame. */
+    double depth;
+    double normal[3];
+    double position[3];
 } opx_contact;
 
-#define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0}
+#define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, \
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
 OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size);
 
 /* A box of uncertain or unknown space overlapped by a link. */

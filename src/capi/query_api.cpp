@@ -25,6 +25,7 @@ CollisionSettings read_collision_request(const opx_collision_request *request, c
     settings.unknown_occupied = merged.unknown_policy == OPX_UNKNOWN_OCCUPIED;
     settings.max_contacts = merged.max_contacts;
     settings.cost = merged.compute_cost != 0;
+    settings.penetration = merged.compute_penetration != 0;
     if (settings.cost) {
         const double p = merged.unknown_probability;
         if (!(p >= 0.0 && p <= 1.0))
@@ -59,7 +60,8 @@ opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
 
 opx_contact contact_to_abi(const Contact &c) {
     return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
-                       {c.center[0], c.center[1], c.center[2]}, c.size, c.probability};
+                       {c.center[0], c.center[1], c.center[2]}, c.size, c.probability, c.depth,
+                       {c.normal[0], c.normal[1], c.normal[2]}, {c.position[0], c.position[1], c.position[2]}};
 }
 
 }  // namespace

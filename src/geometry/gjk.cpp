@@ -39,9 +39,14 @@ GjkResult gjk_cell_distance(const GjkQuery &q) {
         simplex.bary[0] = 1.0;
     }
     Vec3 v = simplex.w[0];
+    // Closer than this is rounding noise around 0: the two touch or overlap.
+    const double zero = 1e-13 * (1.0 + q.cell_half.norm());
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const double vv = v.squaredNorm();
-        if (vv == 0.0) break;  // touching: distance 0
+        if (vv <= zero * zero) {
+            v.setZero();
+            break;
+        }
         const Vec3 s = q.shape->support(-v);
         const Vec3 c = box_support(q.cell_center, q.cell_half, v);
         const Vec3 w = s - c;
@@ -57,6 +62,7 @@ GjkResult gjk_cell_distance(const GjkQuery &q) {
         simplex.push(w, s, c);
         if (!simplex.reduce_to_closest()) {
             result.intersecting = true;
+            result.simplex = simplex;
             return result;
         }
         const Vec3 next = simplex.closest();
@@ -65,10 +71,15 @@ GjkResult gjk_cell_distance(const GjkQuery &q) {
             break;
         }
         v = next;
+        if (v.squaredNorm() <= zero * zero) {
+            v.setZero();
+            break;
+        }
         if (q.stop_below >= 0.0 && v.squaredNorm() <= q.stop_below * q.stop_below) break;
     }
     result.distance = v.norm();
     result.intersecting = result.distance == 0.0;
+    if (result.intersecting) result.simplex = simplex;
     set_witnesses(simplex, result);
     return result;
 }

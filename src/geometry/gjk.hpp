@@ -9,6 +9,7 @@
 #pragma once
 
 #include "geometry/convex.hpp"
+#include "geometry/simplex.hpp"
 
 #include <limits>
 
@@ -32,6 +33,9 @@ struct GjkResult {
     bool intersecting = false;
     Vec3 on_cell = Vec3::Zero();   // witness points, map frame (valid when
     Vec3 on_shape = Vec3::Zero();  // not intersecting and not stopped above)
+    // When intersecting: GJK's last simplex, a tetrahedron holding the
+    // origin (size 4), or smaller when the origin lies on its boundary.
+    Simplex simplex;
 };
 
 GjkResult gjk_cell_distance(const GjkQuery &query);

@@ -17,6 +17,7 @@ struct CollisionSettings {
     float free_log_odds = 0.0f;       // uncertain when free <= log-odds < threshold
     double unknown_probability = 0.5;
     uint32_t max_cost_boxes = 16;     // the costliest kept
+    bool penetration = false;         // depth, normal and point per contact
     Aabb region;                      // where unknown space counts
 };
 
@@ -26,6 +27,9 @@ struct Contact {
     double center[3] = {0, 0, 0};
     double size = 0.0;
     double probability = 0.0;
+    double depth = 0.0;               // with settings.penetration
+    double normal[3] = {0, 0, 0};
+    double position[3] = {0, 0, 0};
 };
 
 struct CollisionOutcome {
