@@ -171,8 +171,11 @@ typedef struct opx_distance_request {
      * or +infinity: no cutoff. */
     double cutoff;
     int32_t per_link;        /* 1: also each link's minimum (opx_query_get_link_distances) */
-    int32_t signed_distance; /* 1: penetration depth as a negative distance
-                              * (not yet supported: OPX_ERROR_UNSUPPORTED) */
+    /* 1: when links overlap obstacles, the distance is minus the deepest
+     * penetration (the padded shape's depth into a cell, by EPA), with the
+     * witnesses at the deepest point of the link and where it leaves the
+     * cell (they are -distance apart).  0 (default): overlap is distance 0. */
+    int32_t signed_distance;
 } opx_distance_request;
 
 #define OPX_DISTANCE_REQUEST_INIT \
@@ -183,12 +186,12 @@ typedef struct opx_distance_result {
     uint32_t struct_size;
     int32_t found;          /* 1: an obstacle within the cutoff; else distance
                              * is the cutoff (or +infinity without one) */
-    int32_t collided;       /* 1 when the distance is 0 (touching or overlapping) */
+    int32_t collided;       /* 1 when the distance is <= 0 (touching or overlapping) */
     int32_t cell_class;     /* class of the closest cell (OPX_CELL_UNKNOWN for
                              * unknown space with OPX_UNKNOWN_OCCUPIED) */
     uint32_t link;          /* the closest link and its shape */
     uint32_t shape;
-    double distance;        /* metres, >= 0, padding included */
+    double distance;        /* metres, padding included; >= 0 unless signed */
     double point_on_link[3]; /* witness on the padded shape, map frame */
     double point_on_cell[3]; /* witness on the cell, map frame; the two are
                               * `distance` apart */

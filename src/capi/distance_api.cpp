@@ -31,14 +31,12 @@ DistanceSettings read_distance_request(const opx_distance_request &r, const Sens
     require_error_bound(r.rel_err, "request->rel_err");
     if (std::isnan(r.cutoff) || r.cutoff < 0.0)
         throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
-    if (r.signed_distance)
-        throw ApiError(OPX_ERROR_UNSUPPORTED,
-                       "request->signed_distance: penetration depth is not implemented yet");
     DistanceSettings s;
     s.threshold_log_odds = threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
     s.unknown_occupied = r.unknown_policy == OPX_UNKNOWN_OCCUPIED;
     s.abs_err = r.abs_err, s.rel_err = r.rel_err;
     s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
+    s.signed_distance = r.signed_distance != 0;
     return s;
 }
 

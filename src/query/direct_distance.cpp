@@ -1,6 +1,7 @@
 #include "query/direct_distance.hpp"
 
 #include "query/shape_distance.hpp"
+#include "query/shape_penetration.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,6 +65,8 @@ void DirectDistance::search(int32_t robot_node) {
 // Prune when the pair cannot bring the answer below the bound, or not by
 // more than the allowed error.
 bool DirectDistance::can_prune(double lower) const {
+    // Signed, and already in contact: only overlapping pairs can go deeper.
+    if (settings_.signed_distance && bound_ <= 0.0) return lower > 0.0;
     if (lower >= bound_) return true;
     if (!best_.found) return false;
     const double slack = std::max(settings_.abs_err, settings_.rel_err * best_.distance);
@@ -76,7 +79,7 @@ bool DirectDistance::is_obstacle(const Cell &cell) const {
 }
 
 void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower) {
-    if (can_prune(lower) || bound_ <= 0.0) return;
+    if (can_prune(lower)) return;
     const AabbTreeNode &robot = links_->tree().node(robot_node);
     const bool octree_leaf = cell.node == nullptr || !view_->has_children(cell.node);
     if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot_node);
@@ -122,7 +125,13 @@ void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {
     if (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_)) return;
     const Aabb box = box_of(cell.key);
     ShapeCellDistance d;
-    if (!shape_cell_distance(shape, box.center(), box.half_extent(), bound_, d, best_.narrow_tests)) return;
+    const double search_bound = std::max(bound_, settings_.signed_distance ? 1e-300 : 0.0);
+    if (!shape_cell_distance(shape, box.center(), box.half_extent(), search_bound, d, best_.narrow_tests)) return;
+    if (settings_.signed_distance && d.distance <= 0.0) {
+        const ShapePenetration p = shape_penetration(shape, box.center(), box.half_extent());
+        if (best_.found && -p.depth >= best_.distance) return;
+        d.distance = -p.depth, d.on_shape = p.on_link, d.on_cell = p.on_cell;
+    }
     best_.found = true;
     best_.distance = d.distance;
     best_.on_link = d.on_shape;

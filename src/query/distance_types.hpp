@@ -15,6 +15,7 @@ struct DistanceSettings {
     double abs_err = 0.0;  // the answer may exceed the minimum by max(abs_err,
     double rel_err = 0.0;  // rel_err * answer); 0 and 0: exact
     double cutoff = std::numeric_limits<double>::infinity();  // farther: "at least cutoff"
+    bool signed_distance = false;  // penetration depth as a negative distance
 };
 
 // The closest pair found: a shape of a link and an obstacle cell.
