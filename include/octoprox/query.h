@@ -223,6 +223,59 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree,
 OPX_API opx_status opx_query_get_link_distances(const opx_query *query, double *out_distances,
                                                 size_t capacity, size_t *out_count);
 
+/* ---- Paths ------------------------------------------------------------- */
+
+typedef struct opx_path_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /* as in opx_collision_request */
+    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
+    int32_t compute_distance;   /* 1: the minimum (unsigned) distance along the path */
+    /* 1: the cost of uncertain and unknown space the path sweeps through
+     * (paper Fig. 3), each cell counted once: a cell's box is the bounding
+     * box of the boxes (cell x link bounding box) of every waypoint and link
+     * that touches it.  Other fields as in opx_collision_request. */
+    int32_t compute_cost;
+    uint32_t max_cost_boxes;    /* the costliest boxes kept (default 16) */
+    uint32_t reserved0;
+    double unknown_probability; /* 0.5 */
+    double region_min[3];
+    double region_max[3];
+} opx_path_request;
+
+#define OPX_PATH_REQUEST_INIT {sizeof(opx_path_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 16, 0, \
+    0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+OPX_API opx_status opx_path_request_init(opx_path_request *request, size_t size);
+
+typedef struct opx_path_result {
+    uint32_t struct_size;
+    int32_t collided;                 /* 1: some waypoint collides */
+    int64_t first_colliding_waypoint; /* -1: none */
+    double min_distance;              /* with compute_distance; +infinity otherwise
+                                       * or when the map holds no obstacle */
+    int64_t min_distance_waypoint;    /* -1: none */
+    double total_cost;                /* m^3, over all cells swept */
+    uint64_t cost_box_count;          /* held by the query (opx_query_get_cost_box) */
+    uint64_t cost_boxes_found;        /* all cells swept */
+    uint64_t narrow_tests;
+} opx_path_result;
+
+#define OPX_PATH_RESULT_INIT {sizeof(opx_path_result), 0, -1, 0.0, -1, 0.0, 0, 0, 0}
+OPX_API opx_status opx_path_result_init(opx_path_result *result, size_t size);
+
+/*
+ * Checks a path of `waypoint_count` waypoints in order.  Waypoint w gives
+ * one pose per link (map frame): link l's pose is at
+ *   (const char *)poses + w * waypoint_stride + l * pose_stride
+ * (pose_stride 0: sizeof(opx_pose); waypoint_stride 0: links x pose_stride).
+ * The link set itself is not moved.  Without distance or cost the check
+ * stops at the first colliding waypoint.  request may be NULL (defaults).
+ */
+OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree,
+                                  const opx_linkset *links, const opx_pose *poses,
+                                  size_t waypoint_count, size_t pose_stride,
+                                  size_t waypoint_stride, const opx_path_request *request,
+                                  opx_path_result *out_result);
+
 #ifdef __cplusplus
 }
 #endif

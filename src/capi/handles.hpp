@@ -4,6 +4,7 @@
 #include "octree/sensor_octree.hpp"
 #include "query/direct_collide.hpp"
 #include "query/direct_distance.hpp"
+#include "query/path_query.hpp"
 #include "robot/linkset.hpp"
 
 #include <octoprox/octree.h>
@@ -27,6 +28,7 @@ struct opx_query {
     std::vector<octoprox::Aabb> link_boxes;   // scratch
     double resolution = 0.0;                  // of the octree of the last query
     octoprox::DirectDistance distance;
+    octoprox::PathQuery path;
     std::vector<double> link_distances;       // of the last per-link distance query
 };
 
@@ -37,5 +39,9 @@ OctreeParams params_from_options(const opx_octree_options &options);
 opx_octree_options options_from_params(const OctreeParams &params);
 // Caller's options (NULL: defaults) read, versioned and validated.
 OctreeParams read_octree_options(const opx_octree_options *options, const char *argument);
+// A collision request (already versioned) checked and turned into settings.
+CollisionSettings collision_settings(const opx_collision_request &request, const SensorOctree &tree);
+// The public form of a cost box.
+opx_cost_box cost_box_to_abi(const CostBox &box, double resolution);
 
 }  // namespace octoprox::capi

@@ -5,11 +5,9 @@
 using namespace octoprox;
 using namespace octoprox::capi;
 
-namespace {
+namespace octoprox::capi {
 
-CollisionSettings read_collision_request(const opx_collision_request *request, const SensorOctree &tree) {
-    opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
-    read_versioned(request, merged, "request");
+CollisionSettings collision_settings(const opx_collision_request &merged, const SensorOctree &tree) {
     if (merged.unknown_policy != OPX_UNKNOWN_FREE && merged.unknown_policy != OPX_UNKNOWN_OCCUPIED)
         throw_invalid(format("request->unknown_policy %d is neither OPX_UNKNOWN_FREE (0) nor "
                              "OPX_UNKNOWN_OCCUPIED (1)",
@@ -43,6 +41,10 @@ CollisionSettings read_collision_request(const opx_collision_request *request, c
     return settings;
 }
 
+}  // namespace octoprox::capi
+
+namespace octoprox::capi {
+
 opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
     opx_cost_box out = OPX_COST_BOX_INIT;
     out.link = b.link;
@@ -57,6 +59,10 @@ opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
     out.cell_size = b.cell.size(resolution);
     return out;
 }
+
+}  // namespace octoprox::capi
+
+namespace {
 
 opx_contact contact_to_abi(const Contact &c) {
     return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
@@ -142,7 +148,9 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         require_pointer(links, "links");
         require_pointer(out_result, "out_result");
         require_struct_size(out_result->struct_size, "out_result");
-        const CollisionSettings settings = read_collision_request(request, *tree->tree);
+        opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const CollisionSettings settings = collision_settings(merged, *tree->tree);
         query->resolution = tree->tree->params().resolution;
         const CollisionOutcome outcome = query->direct.collide(*tree->tree, links->links, settings, query->contacts);
         opx_collision_result result = OPX_COLLISION_RESULT_INIT;

@@ -2,7 +2,7 @@
 
 namespace octoprox {
 
-LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_) {
+LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_), generation_(other.generation_) {
     for (const Link &l : other.links_) {
         Link copy;
         copy.name = l.name, copy.padding = l.padding, copy.enabled = l.enabled, copy.pose = l.pose;
@@ -13,6 +13,7 @@ LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_) {
 }
 
 uint32_t LinkSet::add_link(const std::string &name) {
+    ++generation_;
     Link link;
     link.name = name;
     links_.push_back(std::move(link));
@@ -21,6 +22,7 @@ uint32_t LinkSet::add_link(const std::string &name) {
 }
 
 uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
+    ++generation_;
     if (def.kind == ShapeKind::kMesh) build_mesh_tree(def);
     links_[link].shapes.push_back(std::make_unique<ShapeDef>(std::move(def)));
     rebuild();
@@ -28,18 +30,21 @@ uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
 }
 
 void LinkSet::set_padding(double padding) {
+    ++generation_;
     padding_ = padding;
     for (uint32_t i = 0; i < links_.size(); ++i) place_link(i);
     refit();
 }
 
 void LinkSet::set_link_padding(uint32_t link, double padding) {
+    ++generation_;
     links_[link].padding = padding;
     place_link(link);
     refit();
 }
 
 void LinkSet::set_link_enabled(uint32_t link, bool enabled) {
+    ++generation_;
     links_[link].enabled = enabled;
     place_link(link);
     refit();

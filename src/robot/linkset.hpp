@@ -38,6 +38,9 @@ public:
     size_t link_count() const { return links_.size(); }
     const Link &link(uint32_t index) const { return links_[index]; }
     double padding() const { return padding_; }
+    // Grows with every change but poses: a copy with the same generation
+    // differs from this set only in its poses.
+    uint64_t generation() const { return generation_; }
 
     // What queries read: placed shapes and the tree over their boxes.
     const std::vector<PlacedShape> &placed() const { return placed_; }
@@ -55,6 +58,7 @@ private:
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_
     AabbTree tree_;
     bool topology_from_poses_ = false;
+    uint64_t generation_ = 0;
 };
 
 }  // namespace octoprox

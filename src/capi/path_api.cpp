@@ -1,0 +1,106 @@
+// C shims: path queries.
+#include "capi/checks.hpp"
+#include "capi/handles.hpp"
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+// The path request's fields shared with a collision request.
+opx_collision_request as_collision_request(const opx_path_request &r) {
+    opx_collision_request c = OPX_COLLISION_REQUEST_INIT;
+    c.unknown_policy = r.unknown_policy;
+    c.occupancy_threshold = r.occupancy_threshold;
+    c.compute_cost = r.compute_cost;
+    c.max_cost_boxes = r.max_cost_boxes;
+    c.unknown_probability = r.unknown_probability;
+    for (int axis = 0; axis < 3; ++axis) {
+        c.region_min[axis] = r.region_min[axis];
+        c.region_max[axis] = r.region_max[axis];
+    }
+    return c;
+}
+
+// Reads every waypoint's poses up front, so a bad pose fails the call
+// before any work.
+std::vector<Pose> read_path_poses(const opx_pose *poses, size_t waypoints, size_t links, size_t pose_stride,
+                                  size_t waypoint_stride) {
+    const size_t step = pose_stride == 0 ? sizeof(opx_pose) : pose_stride;
+    if (step < sizeof(opx_pose))
+        throw_invalid(format("pose_stride %zu is smaller than one opx_pose (%zu bytes)", pose_stride, sizeof(opx_pose)));
+    const size_t row = waypoint_stride == 0 ? links * step : waypoint_stride;
+    if (links > 1 && row < (links - 1) * step + sizeof(opx_pose))
+        throw_invalid(format("waypoint_stride %zu is smaller than one waypoint (%zu links)", waypoint_stride, links));
+    if (waypoints > 0 && links > 0) require_pointer(poses, "poses");
+    std::vector<Pose> all(waypoints * links);
+    const auto *bytes = reinterpret_cast<const unsigned char *>(poses);
+    for (size_t w = 0; w < waypoints; ++w) {
+        for (size_t l = 0; l < links; ++l) {
+            opx_pose pose;
+            std::memcpy(&pose, bytes + w * row + l * step, sizeof pose);
+            all[w * links + l] = read_pose(pose, format("poses[waypoint %zu, link %zu]", w, l).c_str());
+        }
+    }
+    return all;
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_path_request_init(opx_path_request *request, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(request, size, opx_path_request(OPX_PATH_REQUEST_INIT), "request");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_path_result_init(opx_path_result *result, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(result, size, opx_path_result(OPX_PATH_RESULT_INIT), "result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                  const opx_pose *poses, size_t waypoint_count, size_t pose_stride,
+                                  size_t waypoint_stride, const opx_path_request *request,
+                                  opx_path_result *out_result) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(tree, "tree");
+        require_pointer(links, "links");
+        require_pointer(out_result, "out_result");
+        require_struct_size(out_result->struct_size, "out_result");
+        opx_path_request merged = OPX_PATH_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const SensorOctree &octree = *tree->tree;
+        PathSettings settings;
+        settings.collision = collision_settings(as_collision_request(merged), octree);
+        settings.distance = merged.compute_distance != 0;
+        settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
+        settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
+        const size_t link_count = links->links.link_count();
+        const std::vector<Pose> all = read_path_poses(poses, waypoint_count, link_count, pose_stride, waypoint_stride);
+        auto poses_of = [&](size_t w, std::vector<Pose> &out) {
+            out.assign(all.begin() + w * link_count, all.begin() + (w + 1) * link_count);
+        };
+        query->resolution = octree.params().resolution;
+        query->contacts.clear();
+        const PathOutcome o = query->path.run(octree, links->links, waypoint_count, poses_of, settings, query->cost_boxes);
+        opx_path_result result = OPX_PATH_RESULT_INIT;
+        result.collided = o.first_collision >= 0 ? 1 : 0;
+        result.first_colliding_waypoint = o.first_collision;
+        result.min_distance = o.min_distance;
+        result.min_distance_waypoint = o.min_distance_waypoint;
+        result.total_cost = o.cost.total;
+        result.cost_boxes_found = o.cost.box_count;
+        result.cost_box_count = query->cost_boxes.size();
+        result.narrow_tests = o.narrow_tests;
+        write_versioned(out_result, result, "out_result");
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"
