@@ -141,7 +141,8 @@ OPX_API opx_status opx_cost_box_init(opx_cost_box *box, size_t size);
 /*
  * Does the link set (enabled links, padding included, at their current
  * poses) collide with the octree?  request may be NULL (defaults).  The
- * contacts stay in the query until its next query.
+ * contacts and cost boxes stay in the query until its next collision or
+ * path query (a path query holds no contacts).
  */
 OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree,
                                      const opx_linkset *links,
@@ -186,7 +187,8 @@ typedef struct opx_distance_result {
     uint32_t struct_size;
     int32_t found;          /* 1: an obstacle within the cutoff; else distance
                              * is the cutoff (or +infinity without one) */
-    int32_t collided;       /* 1 when the distance is <= 0 (touching or overlapping) */
+    int32_t collided;       /* 1 when the distance is <= 1e-9 m, the touch rule of
+                             * collision queries (touching or overlapping) */
     int32_t cell_class;     /* class of the closest cell (OPX_CELL_UNKNOWN for
                              * unknown space with OPX_UNKNOWN_OCCUPIED) */
     uint32_t link;          /* the closest link and its shape */
@@ -215,8 +217,8 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree,
                                       opx_distance_result *out_result);
 
 /*
- * Each link's minimum distance from the last distance query made with
- * per_link = 1, in link order (+infinity: disabled, or nothing within the
+ * Each link's minimum distance from the last distance query, in link order
+ * (none, *out_count = 0, unless that query had per_link = 1) (+infinity: disabled, or nothing within the
  * cutoff).  *out_count gets the number of links; OPX_ERROR_BUFFER_TOO_SMALL
  * when capacity is smaller (the first `capacity` are written).
  */

@@ -1,6 +1,7 @@
 // C shims: distance queries.
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
+#include "query/narrow_phase.hpp"
 
 #include <limits>
 
@@ -49,7 +50,8 @@ opx_distance_result result_to_abi(const DistanceOutcome &o, const DistanceSettin
         return out;
     }
     const double res = tree.params().resolution;
-    out.collided = o.distance <= 0.0 ? 1 : 0;
+    // The same touch rule as collision queries, so the two agree.
+    out.collided = o.distance <= kTouchTolerance ? 1 : 0;
     out.cell_class = o.cell_unknown ? kUnknown : tree.classify_log_odds(o.cell_log_odds);
     out.link = o.link, out.shape = o.shape;
     out.distance = o.distance;

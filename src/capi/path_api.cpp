@@ -30,7 +30,7 @@ std::vector<Pose> read_path_poses(const opx_pose *poses, size_t waypoints, size_
     if (step < sizeof(opx_pose))
         throw_invalid(format("pose_stride %zu is smaller than one opx_pose (%zu bytes)", pose_stride, sizeof(opx_pose)));
     const size_t row = waypoint_stride == 0 ? links * step : waypoint_stride;
-    if (links > 1 && row < (links - 1) * step + sizeof(opx_pose))
+    if (links > 0 && row < (links - 1) * step + sizeof(opx_pose))
         throw_invalid(format("waypoint_stride %zu is smaller than one waypoint (%zu links)", waypoint_stride, links));
     if (waypoints > 0 && links > 0) require_pointer(poses, "poses");
     std::vector<Pose> all(waypoints * links);

@@ -61,6 +61,13 @@ GjkResult gjk_cell_distance(const GjkQuery &q) {
         const Simplex previous = simplex;
         simplex.push(w, s, c);
         if (!simplex.reduce_to_closest()) {
+            // A separating plane (v.w > 0) contradicts "origin inside": the
+            // simplex has degenerated into a needle whose side tests are
+            // rounding noise.  Keep the last good answer.
+            if (vw > 0.0) {
+                simplex = previous;
+                break;
+            }
             result.intersecting = true;
             result.simplex = simplex;
             return result;

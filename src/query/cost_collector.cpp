@@ -38,6 +38,7 @@ CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t 
     for (const Pair &p : pairs_) {
         CostBox box;
         box.box = intersection(p.region, link_boxes[p.link]);
+        if (!(box.box.lo.array() < box.box.hi.array()).all()) continue;  // no volume: no box
         box.probability = p.probability;
         box.cost = p.probability * volume(box.box);
         box.link = p.link, box.cell_class = p.cell_class, box.cell = p.cell;

@@ -104,7 +104,8 @@ void DirectCollider::test_obstacle(const Cell &cell, const PlacedShape &shape, c
 void DirectCollider::test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box) {
     const bool unknown = cell.node == nullptr;
     const Aabb region = unknown ? Aabb{box.lo.cwiseMax(settings_.region.lo), box.hi.cwiseMin(settings_.region.hi)} : box;
-    if (region.empty() || !(region.lo.array() <= region.hi.array()).all()) return;
+    // A cube that only touches the region's face adds no volume: no box.
+    if (!(region.lo.array() < region.hi.array()).all()) return;
     if (!shape_touches_cell(shape, region.center(), region.half_extent(), outcome_.narrow_tests)) return;
     const double p = unknown ? settings_.unknown_probability : probability_from_log_odds(view_->log_odds(cell.node));
     cost_.add(shape.link, cell.key, unknown ? kUnknown : kUncertain, p, region);

@@ -16,9 +16,9 @@ double volume(const Aabb &b) { return (b.hi - b.lo).cwiseMax(0.0).prod(); }
 // caller's set stays read-only; it is copied again only when the caller's
 // set changed in more than its poses.
 LinkSet &PathQuery::posable_copy(const LinkSet &links) {
-    if (!copy_ || copy_source_ != &links || copy_->generation() != links.generation()) {
+    if (!copy_ || copy_source_ != links.identity() || copy_->generation() != links.generation()) {
         copy_ = std::make_unique<LinkSet>(links);
-        copy_source_ = &links;
+        copy_source_ = links.identity();
     }
     return *copy_;
 }

@@ -38,7 +38,7 @@ private:
     CostSummary finish_cost(uint32_t keep, std::vector<CostBox> &out);
 
     std::unique_ptr<LinkSet> copy_;
-    const LinkSet *copy_source_ = nullptr;
+    uint64_t copy_source_ = 0;  // identity of the set copied
     DirectCollider collider_;
     DirectDistance distance_;
     std::vector<Contact> contacts_;

@@ -1,6 +1,13 @@
 #include "robot/linkset.hpp"
 
+#include <atomic>
+
 namespace octoprox {
+
+uint64_t LinkSet::next_identity() {
+    static std::atomic<uint64_t> counter{0};
+    return ++counter;
+}
 
 LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_), generation_(other.generation_) {
     for (const Link &l : other.links_) {

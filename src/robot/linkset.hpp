@@ -41,6 +41,9 @@ public:
     // Grows with every change but poses: a copy with the same generation
     // differs from this set only in its poses.
     uint64_t generation() const { return generation_; }
+    // Unique among all link sets ever made in this process (a copy gets a
+    // new one): unlike an address, never reused.
+    uint64_t identity() const { return identity_; }
 
     // What queries read: placed shapes and the tree over their boxes.
     const std::vector<PlacedShape> &placed() const { return placed_; }
@@ -59,6 +62,8 @@ private:
     AabbTree tree_;
     bool topology_from_poses_ = false;
     uint64_t generation_ = 0;
+    uint64_t identity_ = next_identity();
+    static uint64_t next_identity();
 };
 
 }  // namespace octoprox
