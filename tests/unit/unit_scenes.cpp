@@ -1,0 +1,83 @@
+#include "unit_scenes.hpp"
+
+#include "octree/octomap_io.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+namespace unit {
+
+using octoprox::Aabb;
+using octoprox::Vec3;
+
+std::string data_dir() {
+    const char *env = std::getenv("OPX_DATA_DIR");
+    if (env != nullptr && env[0] != '\0') return env;
+    return OPX_DEFAULT_DATA_DIR;
+}
+
+bool file_exists(const std::string &path) { return std::ifstream(path).good(); }
+
+std::vector<Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt19937_64 &rng) {
+    std::uniform_real_distribution<double> position(-extent, extent), edge(1e-3 * max_edge, max_edge);
+    std::vector<Aabb> boxes;
+    boxes.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Vec3 centre(position(rng), position(rng), position(rng));
+        const Vec3 half(0.5 * edge(rng), 0.5 * edge(rng), 0.5 * edge(rng));
+        boxes.push_back(Aabb::from_center(centre, half));
+    }
+    return boxes;
+}
+
+std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed) {
+    constexpr size_t kCells = 7784;
+    constexpr double kResolution = 0.2, kHalf = 20.0;
+    octoprox::OctreeParams params;
+    params.resolution = kResolution;
+    auto tree = std::make_unique<octoprox::SensorOctree>(params);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> coordinate(-kHalf, kHalf);
+    // One point per distinct cell (OctoMap's key: floor(coordinate / res)).
+    std::set<std::tuple<long, long, long>> cells;
+    std::vector<double> xyz;
+    while (cells.size() < kCells) {
+        const Vec3 p(coordinate(rng), coordinate(rng), coordinate(rng));
+        const auto key = std::make_tuple(std::lround(std::floor(p.x() / kResolution)),
+                                         std::lround(std::floor(p.y() / kResolution)),
+                                         std::lround(std::floor(p.z() / kResolution)));
+        if (cells.insert(key).second) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    }
+    octoprox::PointSource points;
+    points.data = reinterpret_cast<const unsigned char *>(xyz.data());
+    points.count = xyz.size() / 3;
+    points.stride = 3 * sizeof(double);
+    points.is_double = true;
+    octoprox::InsertSettings settings;
+    settings.raycast = false;
+    tree->insert(points, settings);
+    return tree;
+}
+
+std::unique_ptr<octoprox::SensorOctree> read_octree(const std::string &path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return octoprox::read_map_file_bytes(bytes, octoprox::OctreeParams());
+}
+
+octoprox::CellBoxes occupied_cells(const octoprox::SensorOctree &tree) {
+    octoprox::CellBands bands;
+    bands.threshold_log_odds = static_cast<float>(octoprox::log_odds(tree.params().occupied_threshold));
+    bands.free_log_odds = static_cast<float>(octoprox::log_odds(tree.params().free_threshold));
+    octoprox::CellBoxes cells;
+    octoprox::extract_cell_boxes(tree, bands, cells, nullptr);
+    return cells;
+}
+
+}  // namespace unit

@@ -1,0 +1,34 @@
+// Box sets for the broad-phase unit tests: random boxes, the paper's
+// synthetic scene and the geb079 map, each as the cells a context binds.
+#pragma once
+
+#include "broadphase/cell_boxes.hpp"
+#include "octree/sensor_octree.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace unit {
+
+// $OPX_DATA_DIR, else the compile-time default (tests/CMakeLists.txt).
+std::string data_dir();
+bool file_exists(const std::string &path);
+
+// n boxes with centres uniform in [-extent, extent]^3 and edges in
+// (0, max_edge].
+std::vector<octoprox::Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt19937_64 &rng);
+
+// Paper section V: 7,784 distinct random cells of 0.2 m in [-20, 20]^3, each
+// hit once (occupied), in a sensor octree.
+std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed);
+
+// The map at `path` (.bt), default parameters (threshold 0.5).
+std::unique_ptr<octoprox::SensorOctree> read_octree(const std::string &path);
+
+// The occupied cells (log-odds >= log-odds of the occupancy threshold).
+octoprox::CellBoxes occupied_cells(const octoprox::SensorOctree &tree);
+
+}  // namespace unit
