@@ -31,21 +31,31 @@ std::string json_string(const std::string &text) {
     return quoted + "\"";
 }
 
-std::string json_number(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+std::string json_number(double value, int significant_digits = 6) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.*g", significant_digits, value);
     return buffer;
+}
+
+// "T1_plus_Tq_ms" for n = 1, "T1_plus_10Tq_ms" for n = 10.
+std::string total_key(int n) {
+    return "T1_plus_" + (n == 1 ? std::string() : std::to_string(n)) + "Tq_ms";
 }
 
 void write_json_row(std::ostream &out, const TableRow &row) {
     out << "  {\"table\": " << json_string(row.table) << ", \"pipeline\": " << json_string(row.pipeline)
         << ", \"scene\": " << json_string(row.scene) << ", \"variant\": " << json_string(row.variant)
         << ", \"T11_ms\": " << json_number(row.t11_ms) << ", \"T12_ms\": " << json_number(row.t12_ms)
-        << ", \"Tq_ms\": " << json_number(row.tq_ms)
-        << ", \"T1_plus_10Tq_ms\": " << json_number(row.t1_plus_n_queries_ms(10))
-        << ", \"T1_plus_100Tq_ms\": " << json_number(row.t1_plus_n_queries_ms(100))
-        << ", \"queries\": " << row.queries << ", \"cpu\": " << json_string(row.cpu) << "}";
+        << ", \"Tq_ms\": " << json_number(row.tq_ms);
+    if (row.tq_median_ms) out << ", \"Tq_median_ms\": " << json_number(*row.tq_median_ms);
+    for (int n : row.totals_of_queries)
+        out << ", " << json_string(total_key(n)) << ": " << json_number(row.t1_plus_n_queries_ms(n));
+    if (row.distance_m) out << ", \"distance_m\": " << json_number(*row.distance_m, 12);
+    out << ", \"queries\": " << row.queries << ", \"cpu\": " << json_string(row.cpu) << "}";
 }
+
+// "T_1+T_q" for n = 1, "T_1+10T_q" for n = 10.
+std::string total_column(int n) { return "T_1+" + (n == 1 ? std::string() : std::to_string(n)) + "T_q"; }
 
 std::string padded(const std::string &text, size_t width) {
     return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
@@ -69,15 +79,15 @@ std::string three_significant(double value) {
 
 void print_table(std::ostream &out, const std::string &title, const std::vector<TableRow> &rows) {
     out << title << "\n";
+    const std::vector<int> totals = rows.empty() ? std::vector<int>() : rows.front().totals_of_queries;
     out << padded("pipeline", kNameWidth);
-    for (const char *column : {"T_{1,1}", "T_{1,2}", "T_q", "T_1+10T_q", "T_1+100T_q"})
-        out << padded(column, kNumberWidth);
+    for (const char *column : {"T_{1,1}", "T_{1,2}", "T_q"}) out << padded(column, kNumberWidth);
+    for (int n : totals) out << padded(total_column(n), kNumberWidth);
     out << "\n";
     for (const TableRow &row : rows) {
         out << padded(row.pipeline, kNameWidth);
-        for (double value : {row.t11_ms, row.t12_ms, row.tq_ms, row.t1_plus_n_queries_ms(10),
-                             row.t1_plus_n_queries_ms(100)})
-            out << padded(three_significant(value), kNumberWidth);
+        for (double value : {row.t11_ms, row.t12_ms, row.tq_ms}) out << padded(three_significant(value), kNumberWidth);
+        for (int n : totals) out << padded(three_significant(row.t1_plus_n_queries_ms(n)), kNumberWidth);
         out << "\n";
     }
 }

@@ -1,6 +1,7 @@
 // Printing the tables in the paper's format, and the JSON output.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,6 +19,11 @@ struct TableRow {
     double tq_ms = 0.0;
     int queries = 0;
     std::string cpu;
+    // The n of the columns T_1 + n T_q: Table II shows 10 and 100, Table
+    // III (distance) 1.
+    std::vector<int> totals_of_queries{10, 100};
+    std::optional<double> tq_median_ms;  // when the queries differ (real map)
+    std::optional<double> distance_m;    // distance rows: the minimum found
 
     double t1_ms() const { return t11_ms + t12_ms; }
     // T_1 + n T_q: the cost of n queries on one frame of sensor data.
@@ -27,8 +33,8 @@ struct TableRow {
 // `value` with 3 significant digits, without an exponent down to 1e-4.
 std::string three_significant(double value);
 
-// The rows under a title, with the columns T_{1,1}, T_{1,2}, T_q,
-// T_1 + 10 T_q and T_1 + 100 T_q, in ms.
+// The rows under a title, with the columns T_{1,1}, T_{1,2}, T_q and
+// T_1 + n T_q for the first row's totals_of_queries (10 and 100), in ms.
 void print_table(std::ostream &out, const std::string &title, const std::vector<TableRow> &rows);
 
 // Writes the rows as a JSON array of objects; false when the file fails.

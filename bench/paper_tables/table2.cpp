@@ -9,11 +9,9 @@
 // Variants: (a) primitives, (b) triangle meshes.
 #include <iostream>
 
-#include "fcl_pipelines.hpp"
-#include "free_scene.hpp"
-#include "opx_pipelines.hpp"
 #include "tables.hpp"
 #include "timing.hpp"
+#include "variant_setup.hpp"
 
 namespace paper_tables {
 namespace {
@@ -21,86 +19,6 @@ namespace {
 const char *const kBoxesPipeline = "FCL boxes + DynamicAABBTree";
 const char *const kOctreePipeline = "FCL octree";
 const char *const kOpxPipeline = "octoprox direct";
-
-struct Scenes {
-    SceneParameters parameters;
-    OccupancyMaps maps;
-    std::vector<SceneObject> hit;   // scene H
-    std::vector<SceneObject> free;  // scene F
-};
-
-Scenes make_scenes() {
-    Scenes scenes;
-    scenes.maps = build_occupancy_maps(scenes.parameters);
-    Rng rng(scenes.parameters.object_seed);
-    scenes.hit = draw_objects(scenes.parameters, rng);
-    FreeSceneReport report;
-    scenes.free = make_free_scene(scenes.hit, scenes.maps.opx.get(), scenes.parameters, report);
-    std::cout << "Scene: " << scenes.parameters.occupied_cells << " occupied cells of "
-              << scenes.parameters.resolution << " m in [-" << scenes.parameters.half_extent << ", "
-              << scenes.parameters.half_extent << "]^3 m; " << scenes.hit.size() << " objects; "
-              << report.redrawn_objects << " collide in scene H and were redrawn for scene F ("
-              << report.redraws << " poses drawn)\n";
-    return scenes;
-}
-
-// The map side of the boxes pipeline.  The manager points into the boxes.
-struct BoxesMap {
-    double t11_ms = 0.0;
-    double t12_ms = 0.0;
-    std::vector<FclObjectPtr> boxes;
-    std::unique_ptr<FclManager> manager;
-};
-
-// Rebuilt from scratch `repetitions` times; the medians are kept, and the
-// last build serves the queries.
-BoxesMap build_boxes_map(const octomap::OcTree &tree, Variant variant, int repetitions) {
-    std::vector<double> t11, t12;
-    BoxesMap map;
-    for (int i = 0; i < repetitions; ++i) {
-        map.manager.reset();  // untimed teardown of the previous build
-        map.boxes.clear();
-        t11.push_back(time_once_ms([&] { map.boxes = boxes_from_octomap(tree, variant); }));
-        t12.push_back(time_once_ms([&] { map.manager = manage_objects(map.boxes); }));
-    }
-    map.t11_ms = median(t11);
-    map.t12_ms = median(t12);
-    return map;
-}
-
-struct OctreeMap {
-    double t12_ms = 0.0;
-    FclObjectPtr octree;
-};
-
-OctreeMap build_octree_map(const std::shared_ptr<const octomap::OcTree> &tree, int repetitions) {
-    std::vector<double> t12;
-    OctreeMap map;
-    for (int i = 0; i < repetitions; ++i) {
-        map.octree.reset();
-        t12.push_back(time_once_ms([&] { map.octree = wrap_octree(tree); }));
-    }
-    map.t12_ms = median(t12);
-    return map;
-}
-
-// What the scenes of one variant share: the maps of the two FCL
-// pipelines, and OctoProx's query context.
-struct VariantSetup {
-    Variant variant = Variant::kPrimitives;
-    BoxesMap boxes;
-    OctreeMap octree;
-    OpxQueryPtr query;
-};
-
-VariantSetup make_variant_setup(const Scenes &scenes, Variant variant, const BenchOptions &options) {
-    VariantSetup setup;
-    setup.variant = variant;
-    setup.boxes = build_boxes_map(*scenes.maps.octomap, variant, options.repetitions);
-    setup.octree = build_octree_map(scenes.maps.octomap, options.repetitions);
-    setup.query = make_direct_query();
-    return setup;
-}
 
 // Scene F was made collision-free with OctoProx; FCL should agree.
 void warn_if_fcl_finds_collisions(const Scenes &scenes, const VariantSetup &setup) {

@@ -17,4 +17,9 @@ namespace paper_tables {
 // (hits) and F (free); variants (a) primitives and (b) meshes.
 int run_table2(const BenchOptions &options, const std::string &cpu, std::vector<TableRow> &rows);
 
+// Table III: distance, the same scenes and pipelines: the full minimum in
+// scene F, the early stop at 0 in scene H; then single-sphere distance
+// queries in the real map geb079.bt (skipped when the data is absent).
+int run_table3(const BenchOptions &options, const std::string &cpu, std::vector<TableRow> &rows);
+
 }  // namespace paper_tables
