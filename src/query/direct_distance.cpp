@@ -1,5 +1,6 @@
 #include "query/direct_distance.hpp"
 
+#include "query/narrow_phase.hpp"
 #include "query/shape_distance.hpp"
 #include "query/shape_penetration.hpp"
 
@@ -8,10 +9,12 @@
 
 namespace octoprox {
 
-Aabb DirectDistance::box_of(const CellKey &key) const {
-    const double r = view_->resolution();
-    const Vec3 center(key.center(0, r), key.center(1, r), key.center(2, r));
-    return Aabb::from_center(center, Vec3::Constant(0.5 * key.size(r)));
+// Box distance, tightened by the shape itself when the node is one shape.
+double DirectDistance::lower_bound(int32_t robot_node, const Aabb &cell) const {
+    const AabbTreeNode &robot = links_->tree().node(robot_node);
+    const double boxes = std::sqrt(robot.box.squared_distance(cell));
+    if (!robot.is_leaf()) return boxes;
+    return std::max(boxes, shape_lower_bound(links_->placed()[robot.item], cell));
 }
 
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
@@ -56,10 +59,9 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
 }
 
 void DirectDistance::search(int32_t robot_node) {
-    const Cell root{view_->root(), CellKey{}};
+    const Cell root = root_cell(*view_);
     if (root.node == nullptr && !settings_.unknown_occupied) return;
-    const Aabb &robot = links_->tree().node(robot_node).box;
-    recurse(root, robot_node, std::sqrt(robot.squared_distance(box_of(root.key))));
+    recurse(root, robot_node, lower_bound(robot_node, root.box));
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by
@@ -83,34 +85,37 @@ void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower)
     const AabbTreeNode &robot = links_->tree().node(robot_node);
     const bool octree_leaf = cell.node == nullptr || !view_->has_children(cell.node);
     if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot_node);
-    const double resolution = view_->resolution();
-    if (robot.is_leaf() || (!octree_leaf && cell.key.size(resolution) > robot.box.longest_edge()))
+    // As in collision: favour the robot until the cube is twice its node.
+    if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
     // Nearer robot child first.
-    const Aabb cell_box = box_of(cell.key);
     int32_t first = robot.left, second = robot.right;
-    double lower_first = std::sqrt(links_->tree().node(first).box.squared_distance(cell_box));
-    double lower_second = std::sqrt(links_->tree().node(second).box.squared_distance(cell_box));
+    double lower_first = lower_bound(first, cell.box), lower_second = lower_bound(second, cell.box);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
     recurse(cell, first, lower_first);
     recurse(cell, second, lower_second);
 }
 
-// Children sorted by their lower bound, nearest first; children without
-// obstacles (max log-odds below the threshold, or unknown when unknown is
-// free) are skipped.
+// Only the children within the current bound of the robot node's box,
+// without obstacles skipped (max log-odds below the threshold, or unknown
+// when unknown is free), nearest first by their lower bounds.
 void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
-    const Aabb &robot = links_->tree().node(robot_node).box;
+    Aabb reach = links_->tree().node(robot_node).box;
+    if (std::isfinite(bound_)) reach.inflate(std::max(bound_, 0.0));
+    const Vec3 mid = mid_planes(cell, view_->resolution());
+    const unsigned reached = std::isfinite(bound_) ? children_overlapping(reach, mid) : 0xFFu;
     Child children[8];
     int count = 0;
-    for (int i = 0; i < 8; ++i) {
-        const Cell child{view_->child(cell.node, i), cell.key.child(i)};
-        if (child.node == nullptr ? !settings_.unknown_occupied
-                                  : (!settings_.unknown_occupied &&
-                                     view_->log_odds(child.node) < settings_.threshold_log_odds))
+    for (unsigned bits = reached; bits != 0; bits &= bits - 1) {
+        const int i = __builtin_ctz(bits);
+        const OctreeView::NodeRef node = view_->child(cell.node, i);
+        if (node == nullptr ? !settings_.unknown_occupied
+                            : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
+        const Cell child = child_cell(cell, node, i, mid);
+        const Child entry{child, lower_bound(robot_node, child.box)};
+        if (can_prune(entry.lower)) continue;
         // Insertion sort: at most 8 children.
-        const Child entry{child, std::sqrt(robot.squared_distance(box_of(child.key)))};
         int at = count++;
         for (; at > 0 && children[at - 1].lower > entry.lower; --at) children[at] = children[at - 1];
         children[at] = entry;
@@ -123,7 +128,7 @@ void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {
     const PlacedShape &shape = links_->placed()[links_->tree().node(robot_node).item];
     if (shape.box.empty()) return;  // a disabled link
     if (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_)) return;
-    const Aabb box = box_of(cell.key);
+    const Aabb &box = cell.box;
     ShapeCellDistance d;
     const double search_bound = std::max(bound_, settings_.signed_distance ? 1e-300 : 0.0);
     if (!shape_cell_distance(shape, box.center(), box.half_extent(), search_bound, d, best_.narrow_tests)) return;

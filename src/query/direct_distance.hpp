@@ -5,6 +5,7 @@
 
 #include "octree/sensor_octree.hpp"
 #include "query/distance_types.hpp"
+#include "query/octree_cell.hpp"
 #include "robot/linkset.hpp"
 
 #include <vector>
@@ -21,10 +22,7 @@ public:
                                  const DistanceSettings &settings, std::vector<double> &per_link);
 
 private:
-    struct Cell {
-        OctreeView::NodeRef node;  // nullptr: unknown space
-        CellKey key;
-    };
+    using Cell = OctreeCell;
     struct Child {
         Cell cell;
         double lower;
@@ -37,7 +35,7 @@ private:
     void test_leaf_pair(const Cell &cell, int32_t robot_node);
     bool can_prune(double lower) const;
     bool is_obstacle(const Cell &cell) const;
-    Aabb box_of(const CellKey &key) const;
+    double lower_bound(int32_t robot_node, const Aabb &cell) const;
 
     const OctreeView *view_ = nullptr;
     const LinkSet *links_ = nullptr;

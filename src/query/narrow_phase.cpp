@@ -2,6 +2,9 @@
 
 #include "geometry/gjk.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace octoprox {
 namespace {
 
@@ -57,7 +60,34 @@ bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, con
     return !((local.cwiseAbs() - half - box_reach).array() > kTouchTolerance).any();
 }
 
+// The largest gap between an oriented box and an axis-aligned box along
+// the face axes of both (<= their distance; <= 0 when not separated).
+double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half, const Aabb &box) {
+    const Vec3 box_half = box.half_extent();
+    const Vec3 offset = center - box.center();
+    const Eigen::Matrix3d abs_axes = axes.cwiseAbs();
+    const double world_gap = (offset.cwiseAbs() - box_half - abs_axes * half).maxCoeff();
+    const double local_gap = ((axes.transpose() * offset).cwiseAbs() - half - abs_axes.transpose() * box_half).maxCoeff();
+    return std::max(world_gap, local_gap);
+}
+
 }  // namespace
+
+double shape_lower_bound(const PlacedShape &shape, const Aabb &box) {
+    const Convex &core = shape.core;
+    switch (shape.kind) {
+    case ShapeKind::kSphere:
+        return std::sqrt(point_box_distance2(core.center, box.center(), box.half_extent())) - shape.inflation;
+    case ShapeKind::kBox:
+    case ShapeKind::kCylinder:
+        return oriented_box_gap(core.center, core.axes, core.half, box) - shape.inflation;
+    case ShapeKind::kCapsule: {
+        const double half_length = 0.5 * (core.v[1] - core.v[0]).norm();
+        return oriented_box_gap(core.center, core.axes, Vec3(0.0, 0.0, half_length), box) - shape.inflation;
+    }
+    default: return std::sqrt(shape.box.squared_distance(box));
+    }
+}
 
 bool shape_may_touch(const PlacedShape &shape, const Aabb &box) {
     const Convex &core = shape.core;

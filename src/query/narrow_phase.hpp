@@ -22,4 +22,10 @@ bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const
 // capsules (their oriented box, by the 6 face axes).
 bool shape_may_touch(const PlacedShape &shape, const Aabb &box);
 
+// A lower bound of the padded shape's distance to the box (may be
+// negative): the true distance for spheres, the gap along the 6 face axes
+// of the shape's oriented box for boxes, cylinders and capsules, the box
+// distance otherwise.
+double shape_lower_bound(const PlacedShape &shape, const Aabb &box);
+
 }  // namespace octoprox
