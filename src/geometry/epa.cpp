@@ -6,10 +6,14 @@
 namespace octoprox {
 namespace {
 
-constexpr int kMaxVertices = 96;
+// A polytope of V vertices has at most 2V - 4 faces; dead faces are
+// compacted away after every expansion, so these bounds hold.
+constexpr int kMaxVertices = 256;
 constexpr int kMaxFaces = 2 * kMaxVertices;
-constexpr int kMaxIterations = 64;
-constexpr double kRelativeTolerance = 1e-12;
+constexpr int kMaxIterations = kMaxVertices - 8;
+// Polytopes end exactly (no gain); curved cores (cylinders) stop when the
+// next support gains less than this fraction of the depth.
+constexpr double kRelativeTolerance = 1e-10;
 
 struct Vertex {
     Vec3 w, s, c;  // difference point, and the shape and cell points behind it
@@ -76,10 +80,16 @@ void Polytope::expand(int vertex) {
     const Vec3 &w = vertices[vertex].w;
     for (int i = 0; i < face_count; ++i) {
         Face &f = faces[i];
-        if (!f.alive || f.normal.dot(w - vertices[f.v[0]].w) <= 0.0) continue;
+        // Faces the new point sees only by rounding stay: removing a face
+        // that is not truly visible would make the polytope non-convex.
+        if (!f.alive || f.normal.dot(w - vertices[f.v[0]].w) <= 1e-12 * (1.0 + w.norm())) continue;
         f.alive = false;
         for (int k = 0; k < 3; ++k) add_horizon_edge(edges, edge_count, f.v[k], f.v[(k + 1) % 3]);
     }
+    int kept = 0;
+    for (int i = 0; i < face_count; ++i)
+        if (faces[i].alive) faces[kept++] = faces[i];
+    face_count = kept;
     for (int i = 0; i < edge_count; ++i) add_face(edges[i].a, edges[i].b, vertex);
 }
 

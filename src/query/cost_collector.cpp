@@ -23,7 +23,8 @@ void CostCollector::add(uint32_t link, const CellKey &cell, int cell_class, doub
     pairs_.push_back(Pair{link, cell, cell_class, probability, region});
 }
 
-CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out) {
+CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out,
+                                  bool keep_flat) {
     // One box per (link, cell), however many shapes of the link touch it.
     std::sort(pairs_.begin(), pairs_.end(), [](const Pair &a, const Pair &b) {
         return order_key(a.link, a.cell) < order_key(b.link, b.cell);
@@ -38,7 +39,7 @@ CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t 
     for (const Pair &p : pairs_) {
         CostBox box;
         box.box = intersection(p.region, link_boxes[p.link]);
-        if (!(box.box.lo.array() < box.box.hi.array()).all()) continue;  // no volume: no box
+        if (!keep_flat && !(box.box.lo.array() < box.box.hi.array()).all()) continue;  // no volume: no box
         box.probability = p.probability;
         box.cost = p.probability * volume(box.box);
         box.link = p.link, box.cell_class = p.cell_class, box.cell = p.cell;

@@ -34,7 +34,9 @@ public:
     void add(uint32_t link, const CellKey &cell, int cell_class, double probability, const Aabb &region);
     // Dedupes the pairs, builds the boxes against each link's bounding box,
     // keeps the `keep` costliest in `out` (costliest first).
-    CostSummary finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out);
+    // keep_flat keeps boxes of no volume (a path merges them first).
+    CostSummary finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out,
+                       bool keep_flat = false);
 
 private:
     struct Pair {

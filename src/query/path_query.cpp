@@ -40,6 +40,10 @@ CostSummary PathQuery::finish_cost(uint32_t keep, std::vector<CostBox> &out) {
         }
         out.push_back(box);
     }
+    // Cells whose merged box still has no volume give no box.
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](const CostBox &b) { return !(b.box.lo.array() < b.box.hi.array()).all(); }),
+              out.end());
     CostSummary summary;
     for (CostBox &box : out) {
         box.cost = box.probability * volume(box.box);
