@@ -1,6 +1,7 @@
 // C shims: distance queries.
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
+#include "capi/request_checks.hpp"
 #include "query/narrow_phase.hpp"
 
 #include <limits>
@@ -15,26 +16,14 @@ void require_error_bound(double value, const char *argument) {
         throw_invalid(format("%s is %g; a finite value >= 0 is needed", argument, value));
 }
 
-float threshold_log_odds(double threshold, const SensorOctree &tree, const char *argument) {
-    if (!(threshold == 0.0 || (threshold > 0.0 && threshold < 1.0)))
-        throw_invalid(format("%s is %g; 0 (the octree's) or a probability strictly between 0 and 1 "
-                             "is needed",
-                             argument, threshold));
-    return static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
-}
-
 DistanceSettings read_distance_request(const opx_distance_request &r, const SensorOctree &tree) {
-    if (r.unknown_policy != OPX_UNKNOWN_FREE && r.unknown_policy != OPX_UNKNOWN_OCCUPIED)
-        throw_invalid(format("request->unknown_policy %d is neither OPX_UNKNOWN_FREE (0) nor "
-                             "OPX_UNKNOWN_OCCUPIED (1)",
-                             r.unknown_policy));
     require_error_bound(r.abs_err, "request->abs_err");
     require_error_bound(r.rel_err, "request->rel_err");
     if (std::isnan(r.cutoff) || r.cutoff < 0.0)
         throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
     DistanceSettings s;
-    s.threshold_log_odds = threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
-    s.unknown_occupied = r.unknown_policy == OPX_UNKNOWN_OCCUPIED;
+    s.unknown_occupied = read_unknown_policy(r.unknown_policy, "request->unknown_policy");
+    s.threshold_log_odds = read_threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
     s.abs_err = r.abs_err, s.rel_err = r.rel_err;
     s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
     s.signed_distance = r.signed_distance != 0;

@@ -1,6 +1,7 @@
 // C shims: query contexts and collision queries.
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
+#include "capi/request_checks.hpp"
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -8,19 +9,10 @@ using namespace octoprox::capi;
 namespace octoprox::capi {
 
 CollisionSettings collision_settings(const opx_collision_request &merged, const SensorOctree &tree) {
-    if (merged.unknown_policy != OPX_UNKNOWN_FREE && merged.unknown_policy != OPX_UNKNOWN_OCCUPIED)
-        throw_invalid(format("request->unknown_policy %d is neither OPX_UNKNOWN_FREE (0) nor "
-                             "OPX_UNKNOWN_OCCUPIED (1)",
-                             merged.unknown_policy));
-    const double threshold = merged.occupancy_threshold;
-    if (!(threshold == 0.0 || (threshold > 0.0 && threshold < 1.0)))
-        throw_invalid(format("request->occupancy_threshold is %g; 0 (the octree's) or a probability "
-                             "strictly between 0 and 1 is needed",
-                             threshold));
     CollisionSettings settings;
+    settings.unknown_occupied = read_unknown_policy(merged.unknown_policy, "request->unknown_policy");
     settings.threshold_log_odds =
-        static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
-    settings.unknown_occupied = merged.unknown_policy == OPX_UNKNOWN_OCCUPIED;
+        read_threshold_log_odds(merged.occupancy_threshold, tree, "request->occupancy_threshold");
     settings.max_contacts = merged.max_contacts;
     settings.cost = merged.compute_cost != 0;
     settings.penetration = merged.compute_penetration != 0;
