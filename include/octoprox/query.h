@@ -20,18 +20,44 @@ typedef struct opx_query opx_query;
 
 /* Direct octree traversal (paper IV.B): no per-frame preprocessing. */
 #define OPX_ENGINE_DIRECT 1
+/* Amortized (paper IV.A): the first query on an octree frame turns its
+ * obstacle cells into boxes in a Morton-built tree held by the context
+ * (rebuilt when the octree changes or the threshold differs); every query
+ * then refines that tree a little.  Collision and distance run on it with
+ * the same exact tests, so answers equal the direct engine's.  Queries
+ * that need the octree itself (OPX_UNKNOWN_OCCUPIED, compute_cost,
+ * compute_penetration, signed_distance, paths) run the direct engine. */
+#define OPX_ENGINE_AMORTIZED 2
 
 typedef struct opx_query_options {
     uint32_t struct_size;
-    int32_t engine; /* OPX_ENGINE_DIRECT (default) */
+    int32_t engine;        /* OPX_ENGINE_DIRECT (default) or OPX_ENGINE_AMORTIZED */
+    uint32_t refine_steps; /* amortized: refinement paths per query (default 1) */
+    uint32_t morton_bits;  /* amortized: lattice bits per axis, 1..21 (default 10) */
 } opx_query_options;
 
-#define OPX_QUERY_OPTIONS_INIT {sizeof(opx_query_options), OPX_ENGINE_DIRECT}
+#define OPX_QUERY_OPTIONS_INIT {sizeof(opx_query_options), OPX_ENGINE_DIRECT, 1, 10}
 OPX_API opx_status opx_query_options_init(opx_query_options *options, size_t size);
 
 /* options may be NULL (defaults). */
 OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out);
 OPX_API void opx_query_destroy(opx_query *query);
+
+/* What a context holds (amortized engine; zeros for the direct engine). */
+typedef struct opx_query_stats {
+    uint32_t struct_size;
+    int32_t engine;
+    uint64_t boxes;             /* obstacle boxes in the bound tree */
+    uint64_t builds;            /* trees built (one per octree frame bound) */
+    uint64_t refine_steps_done; /* since the last build */
+    /* Surface-area cost of the tree over that of a top-down median-split
+     * tree on the same boxes (computed on demand: O(n log n)); 1 when empty. */
+    double sah_ratio;
+} opx_query_stats;
+
+#define OPX_QUERY_STATS_INIT {sizeof(opx_query_stats), 0, 0, 0, 0, 0.0}
+OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size);
+OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats);
 
 /* What unknown (never observed) space is during a query.  Only the map
  * cube (+-32768 x resolution on each axis) is searched: space outside it

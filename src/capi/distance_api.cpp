@@ -84,9 +84,13 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, 
         read_versioned(request, merged, "request");
         const DistanceSettings settings = read_distance_request(merged, *tree->tree);
         query->link_distances.clear();
+        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED && !settings.unknown_occupied &&
+                               !settings.signed_distance;
         const DistanceOutcome outcome =
-            merged.per_link ? query->distance.run_per_link(*tree->tree, links->links, settings, query->link_distances)
-                            : query->distance.run(*tree->tree, links->links, settings);
+            amortized ? query->amortized.distance(*tree->tree, links->links, settings,
+                                                  merged.per_link ? &query->link_distances : nullptr)
+            : merged.per_link ? query->distance.run_per_link(*tree->tree, links->links, settings, query->link_distances)
+                              : query->distance.run(*tree->tree, links->links, settings);
         write_versioned(out_result, result_to_abi(outcome, settings, *tree->tree), "out_result");
         return OPX_OK;
     });

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "octree/sensor_octree.hpp"
+#include "query/amortized.hpp"
 #include "query/direct_collide.hpp"
 #include "query/direct_distance.hpp"
 #include "query/path_query.hpp"
@@ -29,6 +30,7 @@ struct opx_query {
     double resolution = 0.0;                  // of the octree of the last query
     octoprox::DirectDistance distance;
     octoprox::PathQuery path;
+    octoprox::AmortizedEngine amortized;
     std::vector<double> link_distances;       // of the last per-link distance query
 };
 

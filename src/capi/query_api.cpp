@@ -114,16 +114,47 @@ OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, 
     });
 }
 
+OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size) {
+    return guard(__func__, [&] {
+        init_versioned(stats, size, opx_query_stats(OPX_QUERY_STATS_INIT), "stats");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats) {
+    return guard(__func__, [&] {
+        require_pointer(query, "query");
+        require_pointer(out_stats, "out_stats");
+        require_struct_size(out_stats->struct_size, "out_stats");
+        opx_query_stats stats = OPX_QUERY_STATS_INIT;
+        stats.engine = query->engine;
+        if (query->engine == OPX_ENGINE_AMORTIZED) {
+            const AmortizedStats s = query->amortized.stats();
+            stats.boxes = s.boxes, stats.builds = s.builds, stats.refine_steps_done = s.refine_steps_done;
+            stats.sah_ratio = query->amortized.sah_ratio();
+        }
+        write_versioned(out_stats, stats, "out_stats");
+        return OPX_OK;
+    });
+}
+
 OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query **out) {
     if (out != nullptr) *out = nullptr;
     return guard(__func__, [&] {
         require_pointer(out, "out");
         opx_query_options merged = OPX_QUERY_OPTIONS_INIT;
         read_versioned(options, merged, "options");
-        if (merged.engine != OPX_ENGINE_DIRECT)
-            throw_invalid(format("options->engine %d is not OPX_ENGINE_DIRECT (1)", merged.engine));
+        if (merged.engine != OPX_ENGINE_DIRECT && merged.engine != OPX_ENGINE_AMORTIZED)
+            throw_invalid(format("options->engine %d is neither OPX_ENGINE_DIRECT (1) nor OPX_ENGINE_AMORTIZED (2)",
+                                 merged.engine));
+        if (merged.morton_bits < 1 || merged.morton_bits > 21)
+            throw_invalid(format("options->morton_bits %u is outside 1..21", merged.morton_bits));
         auto query = std::make_unique<opx_query>();
         query->engine = merged.engine;
+        AmortizedOptions amortized;
+        amortized.refine_steps = merged.refine_steps;
+        amortized.morton_bits = static_cast<int>(merged.morton_bits);
+        query->amortized = AmortizedEngine(amortized);
         *out = query.release();
         return OPX_OK;
     });
@@ -144,7 +175,11 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         read_versioned(request, merged, "request");
         const CollisionSettings settings = collision_settings(merged, *tree->tree);
         query->resolution = tree->tree->params().resolution;
-        const CollisionOutcome outcome = query->direct.collide(*tree->tree, links->links, settings, query->contacts);
+        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED && !settings.unknown_occupied &&
+                               !settings.cost && !settings.penetration;
+        const CollisionOutcome outcome =
+            amortized ? query->amortized.collide(*tree->tree, links->links, settings, query->contacts)
+                      : query->direct.collide(*tree->tree, links->links, settings, query->contacts);
         opx_collision_result result = OPX_COLLISION_RESULT_INIT;
         result.collided = outcome.collided ? 1 : 0;
         result.contact_count = query->contacts.size();

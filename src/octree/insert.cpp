@@ -53,6 +53,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     if (settings.raycast && !contains(Vec3(origin.x(), origin.y(), origin.z())))
         throw_invalid("sensor_pose.position lies outside the map cube");
 
+    ++generation_;
     InsertCounts counts;
     const octomap::Pointcloud cloud = usable_points(*this, points, settings, counts);
     octomap::KeySet free_cells, occupied_cells;

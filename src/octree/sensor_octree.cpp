@@ -6,6 +6,7 @@
 #include <octomap/OcTree.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 namespace octoprox {
@@ -103,7 +104,13 @@ bool SensorOctree::contains(const Vec3 &point) const {
     return tree_->coordToKeyChecked(point.x(), point.y(), point.z(), key);
 }
 
+uint64_t SensorOctree::next_identity() {
+    static std::atomic<uint64_t> counter{0};
+    return ++counter;
+}
+
 void SensorOctree::clear() {
+    ++generation_;
     tree_->clear();
     known_bounds_ = Aabb();
 }

@@ -85,6 +85,10 @@ public:
     // Bounds of every observed cell, kept up to date by each change, so
     // queries can bound unknown space without a pass over the map.
     const Aabb &known_bounds() const { return known_bounds_; }
+    // A process-unique identity and a count of changes: a query context
+    // that built structures from this map rebuilds them when either moved.
+    uint64_t identity() const { return identity_; }
+    uint64_t generation() const { return generation_; }
 
 private:
     void apply_params();
@@ -98,6 +102,9 @@ private:
     float occupied_log_odds_ = 0.0f;
     float free_log_odds_ = 0.0f;
     Aabb known_bounds_;
+    uint64_t identity_ = next_identity();
+    uint64_t generation_ = 0;
+    static uint64_t next_identity();
 };
 
 }  // namespace octoprox

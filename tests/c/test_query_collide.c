@@ -17,7 +17,7 @@ static void create_rejects_bad_arguments(void **state) {
     options.struct_size = 0;
     expect_failure(OPX_ERROR_VERSION, "opx_query_create", "struct_size", opx_query_create(&options, &query));
     assert_null(query);
-    const int32_t bad[] = {0, 2, -1, INT32_MAX};
+    const int32_t bad[] = {0, 3, -1, INT32_MAX};
     for (size_t i = 0; i < 4; ++i) {
         opx_query_options o = OPX_QUERY_OPTIONS_INIT;
         o.engine = bad[i];
@@ -25,7 +25,20 @@ static void create_rejects_bad_arguments(void **state) {
         expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_query_create", "engine", opx_query_create(&o, &query));
         assert_null(query);
     }
+    const uint32_t bad_bits[] = {0, 22};
+    for (size_t i = 0; i < 2; ++i) {
+        opx_query_options o = OPX_QUERY_OPTIONS_INIT;
+        o.engine = OPX_ENGINE_AMORTIZED;
+        o.morton_bits = bad_bits[i];
+        query = (opx_query *)&query;
+        expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_query_create", "morton_bits", opx_query_create(&o, &query));
+        assert_null(query);
+    }
     opx_query_options o = OPX_QUERY_OPTIONS_INIT;
+    assert_ok(opx_query_create(&o, &query));
+    assert_non_null(query);
+    opx_query_destroy(query);
+    o.engine = OPX_ENGINE_AMORTIZED;
     assert_ok(opx_query_create(&o, &query));
     assert_non_null(query);
     opx_query_destroy(query);

@@ -1,3 +1,4 @@
+#include "oracle_engine.hpp"
 #include "path_cases.hpp"
 
 #include <cmath>
@@ -19,7 +20,7 @@ struct Fixture {
         options.resolution = 0.5;  // every coordinate below is exact in binary
         opx_octree_create(&options, &tree);
         insert_frame(tree, {Vec3(0.25, 0.25, 0.25)}, opx_pose OPX_POSE_IDENTITY, OPX_INSERT_ENDPOINTS);
-        opx_query_create(nullptr, &query);
+        oracle_create_query(&query);
     }
     ~Fixture() {
         opx_query_destroy(query);

@@ -7,6 +7,7 @@
 // also the empty map with an explicit region (the root cube clipped to it).
 // Requests vary the threshold, unknown policy, unknown_probability,
 // max_contacts, max_cost_boxes and the region (default: the observed bounds).
+#include "oracle_engine.hpp"
 #include "oracle_cost_check.hpp"
 #include "oracle_enclosure.hpp"
 
@@ -152,7 +153,7 @@ int main() {
     Rng rng(seed);
     CostChecker checker("oracle_cost");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     for (int i = 0; i < scenes; ++i) {
         std::unique_ptr<Scene> scene = raycast_scene(rng);
         scene->label = "map " + std::to_string(i) + " (" + scene->label + ")";

@@ -7,6 +7,7 @@
 // (either may be reported) and shapes touching a cell (distance 0).
 // Each robot state is asked several requests: exact (per-link or not), with
 // a cutoff, and with an allowed absolute or relative error.
+#include "oracle_engine.hpp"
 #include "oracle_distance_check.hpp"
 #include "oracle_enclosure.hpp"
 
@@ -150,7 +151,7 @@ int main() {
     Rng rng(seed);
     DistanceChecker checker("oracle_distance");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     hand_made_cases(query, checker);
     std::printf("hand-made cases: %llu queries, %.1f s\n", (unsigned long long)checker.queries(), elapsed_seconds());
     empty_map(rng, query, checker);

@@ -35,6 +35,7 @@
 //   boxes.  The box at the origin is the map: the cube [-0.5, 0.5]^3 is 8
 //   cells at r = 0.5 ([-1, 1]^3 for the 2 m box: 8 cells at r = 1), the
 //   other box is the link; translations swept along +-x, +-y, +-z.
+#include "oracle_engine.hpp"
 #include "oracle_distance_check.hpp"
 #include "oracle_enclosure.hpp"
 
@@ -167,7 +168,7 @@ void issue_508(opx_query *query) {
 int main() {
     elapsed_seconds();
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     issue_640(query);
     issue_639(query);
     issue_504(query);

@@ -4,6 +4,7 @@
 // packed and strided pose arrays, with and without distance and cost, each
 // checked against the oracle waypoint by waypoint (oracle_path_check.hpp).
 // Then hand-made cases (path_cases.hpp).
+#include "oracle_engine.hpp"
 #include "oracle_path_check.hpp"
 #include "path_cases.hpp"
 
@@ -77,7 +78,7 @@ void run_scene(Rng &rng, const Scene &scene, int robots, int paths, PathReport &
         opx_linkset *links = build_linkset(robot);
         // A new query per link set: see path_cases.cpp, replaced_link_set.
         opx_query *query = nullptr;
-        opx_query_create(nullptr, &query);
+        oracle_create_query(&query);
         for (int p = 0; p < paths; ++p) {
             randomize_state(rng, robot, options, low, high);
             update_linkset(links, robot, unsigned(p));

@@ -4,6 +4,7 @@
 //  - random robots of all six shape kinds at random states;
 //  - single shapes placed with their origin inside a random obstacle cell
 //    (deep overlaps, sphere centres inside cells, pruned and unknown cubes).
+#include "oracle_engine.hpp"
 #include "penetration_check.hpp"
 
 #include "oracle_depth.hpp"
@@ -145,7 +146,7 @@ int main() {
     DepthReport report("oracle_penetration");
     if (check_oracle(report) > 0) return report.finish(elapsed_seconds());
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     for (int i = 0; i < scenes; ++i) {
         std::unique_ptr<Scene> scene = random_small_scene(rng, true);
         scene->label = "scene " + std::to_string(i) + " (" + scene->label + ", seed " + std::to_string(seed) + ")";

@@ -6,6 +6,7 @@
 // answers go both ways).  The yes/no answers and the contact sets are
 // compared with the brute-force oracle (every triangle against every
 // occupied leaf near it).
+#include "oracle_engine.hpp"
 #include "oracle_scenes.hpp"
 #include "stl_reader.hpp"
 
@@ -99,7 +100,7 @@ int main() {
     randomize_state(rng, robot, options, scene.low, scene.high);
     opx_linkset *links = build_linkset(robot);
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     Checker checker("oracle_pr2_geb079");
     for (int i = 0; i < kPoses; ++i) {
         randomize_state(rng, robot, options, scene.low, scene.high);

@@ -2,6 +2,7 @@
 // some reloaded from .ot or .bt bytes) and random robots of all six shape
 // kinds, unknown space free: the library's yes/no answers and contact sets
 // against the brute-force oracle.
+#include "oracle_engine.hpp"
 #include "oracle_scenes.hpp"
 
 #include <cstdio>
@@ -41,7 +42,7 @@ int main() {
     Rng rng(seed);
     Checker checker("oracle_random_scenes");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     int reloaded[2] = {0, 0};
     for (int i = 0; i < scenes; ++i) {
         std::unique_ptr<Scene> scene = random_small_scene(rng, false);

@@ -2,6 +2,7 @@
 // occupied leaves from random single hits) against random robots of all six
 // shape kinds placed anywhere in the cube: yes/no answers and contact sets
 // against the brute-force oracle.
+#include "oracle_engine.hpp"
 #include "oracle_scenes.hpp"
 
 #include <cstdio>
@@ -19,7 +20,7 @@ int main() {
     std::printf("synthetic scene: %zu leaves, built in %.1f s\n", scene->leaves.size(), elapsed_seconds());
     Checker checker("oracle_synthetic");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     Campaign campaign;
     campaign.robot.min_links = 2, campaign.robot.max_links = 8;
     campaign.robot.min_scale = 0.3, campaign.robot.max_scale = 3.0;

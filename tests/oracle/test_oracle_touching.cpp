@@ -14,6 +14,7 @@
 // below is exact in binary).  Each case states its expected answer; the
 // library must give it, and the oracle too (unless it calls the pair
 // ambiguous: cylinders within 1e-5 m of the threshold).
+#include "oracle_engine.hpp"
 #include "oracle_scenes.hpp"
 
 #include <cstdio>
@@ -191,7 +192,7 @@ int main() {
     }
     Checker checker("oracle_touching");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     for (const Case &c : geometry_cases()) run_case(c, scene, query, checker);
     for (const Case &c : padding_and_threshold_cases(scene.leaves[0].probability)) run_case(c, scene, query, checker);
     opx_query_destroy(query);

@@ -16,6 +16,7 @@
 // ray casting from inside (walls of endpoints with a few holes, so the
 // unknown is just outside and behind the holes) with links inside it, small
 // random maps, and the empty map (every link touches the root cube).
+#include "oracle_engine.hpp"
 #include "oracle_scenes.hpp"
 
 #include <cmath>
@@ -156,7 +157,7 @@ int main() {
     Rng rng(seed);
     Checker checker("oracle_unknown");
     opx_query *query = nullptr;
-    if (opx_query_create(nullptr, &query) != OPX_OK) return 1;
+    if (oracle_create_query(&query) != OPX_OK) return 1;
     Campaign inside;  // small links inside the observed region
     inside.robot.min_scale = 0.05, inside.robot.max_scale = 0.5, inside.robot.max_padding = 0.1;
     inside.unknown_policy = OPX_UNKNOWN_OCCUPIED;
