@@ -12,6 +12,12 @@ namespace paper_tables {
 // Each prints its tables, appends its rows, and returns 0, or 1 when a
 // correctness check failed (the pipelines disagree: "MISMATCH").
 
+// Table I: FCL's default and Morton broad-phase builds against OctoProx's
+// amortized engine (unrefined, refined) and direct engine, collision in
+// scene F (variant a) at 7,784 cells, then 25k, 100k, 300k random cells.
+// Writes its own JSON rows (options.json_path), not through `rows`.
+int run_table1(const BenchOptions &options, const std::string &cpu);
+
 // Table II: collision, 300 objects against a 7,784-cell octree; pipelines
 // FCL boxes + DynamicAABBTree, FCL octree, octoprox direct; scenes H
 // (hits) and F (free); variants (a) primitives and (b) meshes.

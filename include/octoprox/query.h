@@ -53,9 +53,11 @@ typedef struct opx_query_stats {
     /* Surface-area cost of the tree over that of a top-down median-split
      * tree on the same boxes (computed on demand: O(n log n)); 1 when empty. */
     double sah_ratio;
+    double extract_ms;          /* last bind: obstacle cells to boxes (paper T_{1,1}) */
+    double build_ms;            /* last bind: boxes to the tree (paper ~T_{1,2}) */
 } opx_query_stats;
 
-#define OPX_QUERY_STATS_INIT {sizeof(opx_query_stats), 0, 0, 0, 0, 0.0}
+#define OPX_QUERY_STATS_INIT {sizeof(opx_query_stats), 0, 0, 0, 0, 0.0, 0.0, 0.0}
 OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size);
 OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats);
 

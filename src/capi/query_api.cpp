@@ -132,6 +132,7 @@ OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_st
             const AmortizedStats s = query->amortized.stats();
             stats.boxes = s.boxes, stats.builds = s.builds, stats.refine_steps_done = s.refine_steps_done;
             stats.sah_ratio = query->amortized.sah_ratio();
+            stats.extract_ms = s.extract_ms, stats.build_ms = s.build_ms;
         }
         write_versioned(out_stats, stats, "out_stats");
         return OPX_OK;

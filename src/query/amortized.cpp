@@ -3,6 +3,7 @@
 #include "query/narrow_phase.hpp"
 #include "query/shape_distance.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace octoprox {
@@ -11,20 +12,28 @@ void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
     if (builds_ > 0 && bound_identity_ == tree.identity() && bound_generation_ == tree.generation() &&
         bound_threshold_ == threshold_log_odds)
         return;
+    using Clock = std::chrono::steady_clock;
+    const auto ms_since = [](Clock::time_point t) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+    };
+    const auto start = Clock::now();
     CellBands bands;
     bands.threshold_log_odds = threshold_log_odds;
     bands.free_log_odds = threshold_log_odds;
     extract_cell_boxes(tree, bands, cells_, nullptr);
+    extract_ms_ = ms_since(start);
+    const auto built = Clock::now();
     BoxTreeOptions options;
     options.morton_bits = options_.morton_bits;
     tree_.build(cells_.boxes, options);
+    build_ms_ = ms_since(built);
     bound_identity_ = tree.identity(), bound_generation_ = tree.generation();
     bound_threshold_ = threshold_log_odds;
     ++builds_;
 }
 
 AmortizedStats AmortizedEngine::stats() const {
-    return AmortizedStats{cells_.boxes.size(), builds_, tree_.refine_steps_done()};
+    return AmortizedStats{cells_.boxes.size(), builds_, tree_.refine_steps_done(), extract_ms_, build_ms_};
 }
 
 // Each enabled shape against the cell tree: boxes first, the shape's own

@@ -25,6 +25,8 @@ struct AmortizedStats {
     uint64_t boxes = 0;
     uint64_t builds = 0;
     uint64_t refine_steps_done = 0;
+    double extract_ms = 0.0;  // last bind: cells to boxes (T_{1,1})
+    double build_ms = 0.0;    // last bind: boxes to tree (~T_{1,2})
 };
 
 class AmortizedEngine {
@@ -50,6 +52,7 @@ private:
     uint64_t bound_identity_ = 0, bound_generation_ = 0;
     float bound_threshold_ = 0.0f;
     uint64_t builds_ = 0;
+    double extract_ms_ = 0.0, build_ms_ = 0.0;
 };
 
 }  // namespace octoprox
