@@ -24,22 +24,10 @@ using DistanceQuery = std::function<double()>;
 inline std::vector<DistanceTiming> time_distance_queries_interleaved(int count,
                                                                      const std::vector<DistanceQuery> &queries,
                                                                      int rounds = 10) {
-    std::vector<DistanceTiming> timings(queries.size());
-    std::vector<double> total_ms(queries.size(), 0.0);
-    for (size_t q = 0; q < queries.size(); ++q) timings[q].distance = queries[q]();
-    rounds = std::max(1, std::min(rounds, count));
-    for (int round = 0; round < rounds; ++round) {
-        const int batch = count / rounds + (round < count % rounds ? 1 : 0);
-        for (size_t q = 0; q < queries.size(); ++q) {
-            int disagreements = 0;
-            const Clock::time_point start = Clock::now();
-            for (int i = 0; i < batch; ++i) disagreements += queries[q]() != timings[q].distance;
-            total_ms[q] += milliseconds_between(start, Clock::now());
-            if (disagreements != 0) timings[q].consistent = false;
-        }
-    }
-    for (size_t q = 0; q < queries.size(); ++q) timings[q].mean_ms = count > 0 ? total_ms[q] / count : 0.0;
-    return timings;
+    std::vector<DistanceTiming> out;
+    for (const TimingOf<double> &t : time_interleaved<double>(count, queries, rounds))
+        out.push_back(DistanceTiming{t.mean_ms, t.answer, t.consistent});
+    return out;
 }
 
 }  // namespace paper_tables

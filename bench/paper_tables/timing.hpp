@@ -38,24 +38,41 @@ using CollisionQuery = std::function<bool()>;
 // machine's load during the run (other builds on a shared machine) hits
 // all of them alike.  Each query runs once untimed first, to warm caches
 // and get its answer.  T_q is the total time over `count` calls / count.
-inline std::vector<QueryTiming> time_queries_interleaved(int count, const std::vector<CollisionQuery> &queries,
-                                                         int rounds = 10) {
-    std::vector<QueryTiming> timings(queries.size());
+template <class Answer>
+struct TimingOf {
+    double mean_ms = 0.0;
+    Answer answer{};         // the answer of the first (untimed) call
+    bool consistent = true;  // every call gave the same answer, bit for bit
+};
+
+// The loop behind both kinds of query (collision yes/no, distance).
+template <class Answer>
+std::vector<TimingOf<Answer>> time_interleaved(int count, const std::vector<std::function<Answer()>> &queries,
+                                               int rounds) {
+    std::vector<TimingOf<Answer>> timings(queries.size());
     std::vector<double> total_ms(queries.size(), 0.0);
-    for (size_t q = 0; q < queries.size(); ++q) timings[q].collided = queries[q]();
+    for (size_t q = 0; q < queries.size(); ++q) timings[q].answer = queries[q]();
     rounds = std::max(1, std::min(rounds, count));
     for (int round = 0; round < rounds; ++round) {
         const int batch = count / rounds + (round < count % rounds ? 1 : 0);
         for (size_t q = 0; q < queries.size(); ++q) {
             int disagreements = 0;
             const Clock::time_point start = Clock::now();
-            for (int i = 0; i < batch; ++i) disagreements += queries[q]() != timings[q].collided;
+            for (int i = 0; i < batch; ++i) disagreements += queries[q]() != timings[q].answer;
             total_ms[q] += milliseconds_between(start, Clock::now());
             if (disagreements != 0) timings[q].consistent = false;
         }
     }
     for (size_t q = 0; q < queries.size(); ++q) timings[q].mean_ms = count > 0 ? total_ms[q] / count : 0.0;
     return timings;
+}
+
+inline std::vector<QueryTiming> time_queries_interleaved(int count, const std::vector<CollisionQuery> &queries,
+                                                         int rounds = 10) {
+    std::vector<QueryTiming> out;
+    for (const TimingOf<bool> &t : time_interleaved<bool>(count, queries, rounds))
+        out.push_back(QueryTiming{t.mean_ms, t.answer, t.consistent});
+    return out;
 }
 
 // The time of one call of `work`, in milliseconds.
