@@ -61,6 +61,15 @@ void init_versioned(T *out, size_t size, const T &defaults, const char *argument
     out->struct_size = static_cast<uint32_t>(n);
 }
 
+// The whole body of every opx_x_init(ptr, size) function.
+template <class T>
+opx_status init_struct(const char *function, T *out, size_t size, const T &defaults, const char *argument) noexcept {
+    return guard(function, [&] {
+        init_versioned(out, size, defaults, argument);
+        return OPX_OK;
+    });
+}
+
 // A pose from the ABI, checked: finite, non-zero quaternion (normalised).
 Pose read_pose(const opx_pose &pose, const char *argument);
 

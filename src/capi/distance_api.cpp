@@ -59,17 +59,11 @@ opx_distance_result result_to_abi(const DistanceOutcome &o, const DistanceSettin
 extern "C" {
 
 OPX_API opx_status opx_distance_request_init(opx_distance_request *request, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(request, size, opx_distance_request(OPX_DISTANCE_REQUEST_INIT), "request");
-        return OPX_OK;
-    });
+    return init_struct(__func__, request, size, opx_distance_request(OPX_DISTANCE_REQUEST_INIT), "request");
 }
 
 OPX_API opx_status opx_distance_result_init(opx_distance_result *result, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(result, size, opx_distance_result(OPX_DISTANCE_RESULT_INIT), "result");
-        return OPX_OK;
-    });
+    return init_struct(__func__, result, size, opx_distance_result(OPX_DISTANCE_RESULT_INIT), "result");
 }
 
 OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, const opx_linkset *links,

@@ -113,10 +113,7 @@ ShapeDef read_shape(const opx_shape *in) {
 extern "C" {
 
 OPX_API opx_status opx_shape_init(opx_shape *shape, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(shape, size, opx_shape(OPX_SHAPE_INIT), "shape");
-        return OPX_OK;
-    });
+    return init_struct(__func__, shape, size, opx_shape(OPX_SHAPE_INIT), "shape");
 }
 
 OPX_API opx_status opx_linkset_create(opx_linkset **out) {

@@ -81,24 +81,15 @@ using namespace octoprox::capi;
 extern "C" {
 
 OPX_API opx_status opx_octree_options_init(opx_octree_options *options, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(options, size, opx_octree_options(OPX_OCTREE_OPTIONS_INIT), "options");
-        return OPX_OK;
-    });
+    return init_struct(__func__, options, size, opx_octree_options(OPX_OCTREE_OPTIONS_INIT), "options");
 }
 
 OPX_API opx_status opx_insert_options_init(opx_insert_options *options, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(options, size, opx_insert_options(OPX_INSERT_OPTIONS_INIT), "options");
-        return OPX_OK;
-    });
+    return init_struct(__func__, options, size, opx_insert_options(OPX_INSERT_OPTIONS_INIT), "options");
 }
 
 OPX_API opx_status opx_insert_report_init(opx_insert_report *report, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(report, size, opx_insert_report(OPX_INSERT_REPORT_INIT), "report");
-        return OPX_OK;
-    });
+    return init_struct(__func__, report, size, opx_insert_report(OPX_INSERT_REPORT_INIT), "report");
 }
 
 OPX_API opx_status opx_octree_create(const opx_octree_options *options, opx_octree **out) {

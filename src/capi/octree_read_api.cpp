@@ -63,17 +63,11 @@ size_t copy_leaves(const SensorOctree &tree, uint32_t class_mask, opx_leaf *out,
 extern "C" {
 
 OPX_API opx_status opx_cell_info_init(opx_cell_info *info, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(info, size, opx_cell_info(OPX_CELL_INFO_INIT), "info");
-        return OPX_OK;
-    });
+    return init_struct(__func__, info, size, opx_cell_info(OPX_CELL_INFO_INIT), "info");
 }
 
 OPX_API opx_status opx_octree_stats_init(opx_octree_stats *stats, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(stats, size, opx_octree_stats(OPX_OCTREE_STATS_INIT), "stats");
-        return OPX_OK;
-    });
+    return init_struct(__func__, stats, size, opx_octree_stats(OPX_OCTREE_STATS_INIT), "stats");
 }
 
 OPX_API opx_status opx_octree_classify(const opx_octree *tree, const double point[3],

@@ -50,17 +50,11 @@ std::vector<Pose> read_path_poses(const opx_pose *poses, size_t waypoints, size_
 extern "C" {
 
 OPX_API opx_status opx_path_request_init(opx_path_request *request, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(request, size, opx_path_request(OPX_PATH_REQUEST_INIT), "request");
-        return OPX_OK;
-    });
+    return init_struct(__func__, request, size, opx_path_request(OPX_PATH_REQUEST_INIT), "request");
 }
 
 OPX_API opx_status opx_path_result_init(opx_path_result *result, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(result, size, opx_path_result(OPX_PATH_RESULT_INIT), "result");
-        return OPX_OK;
-    });
+    return init_struct(__func__, result, size, opx_path_result(OPX_PATH_RESULT_INIT), "result");
 }
 
 OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, const opx_linkset *links,

@@ -67,38 +67,23 @@ opx_contact contact_to_abi(const Contact &c) {
 extern "C" {
 
 OPX_API opx_status opx_query_options_init(opx_query_options *options, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(options, size, opx_query_options(OPX_QUERY_OPTIONS_INIT), "options");
-        return OPX_OK;
-    });
+    return init_struct(__func__, options, size, opx_query_options(OPX_QUERY_OPTIONS_INIT), "options");
 }
 
 OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(request, size, opx_collision_request(OPX_COLLISION_REQUEST_INIT), "request");
-        return OPX_OK;
-    });
+    return init_struct(__func__, request, size, opx_collision_request(OPX_COLLISION_REQUEST_INIT), "request");
 }
 
 OPX_API opx_status opx_collision_result_init(opx_collision_result *result, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(result, size, opx_collision_result(OPX_COLLISION_RESULT_INIT), "result");
-        return OPX_OK;
-    });
+    return init_struct(__func__, result, size, opx_collision_result(OPX_COLLISION_RESULT_INIT), "result");
 }
 
 OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(contact, size, opx_contact(OPX_CONTACT_INIT), "contact");
-        return OPX_OK;
-    });
+    return init_struct(__func__, contact, size, opx_contact(OPX_CONTACT_INIT), "contact");
 }
 
 OPX_API opx_status opx_cost_box_init(opx_cost_box *box, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(box, size, opx_cost_box(OPX_COST_BOX_INIT), "box");
-        return OPX_OK;
-    });
+    return init_struct(__func__, box, size, opx_cost_box(OPX_COST_BOX_INIT), "box");
 }
 
 OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, opx_cost_box *out_box) {
@@ -115,10 +100,7 @@ OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, 
 }
 
 OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size) {
-    return guard(__func__, [&] {
-        init_versioned(stats, size, opx_query_stats(OPX_QUERY_STATS_INIT), "stats");
-        return OPX_OK;
-    });
+    return init_struct(__func__, stats, size, opx_query_stats(OPX_QUERY_STATS_INIT), "stats");
 }
 
 OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats) {
