@@ -2,8 +2,8 @@
 // endpoints every half cell and ray cast from sensors near its centre, so
 // the inside is known free (or uncertain), the walls occupied, and unknown
 // space lies just outside the walls and behind holes in them.  With no hole
-// the observed region is fully enclosed.  (The same construction as
-// test_oracle_unknown.cpp's observed boxes.)
+// the observed region is fully enclosed.  test_oracle_unknown.cpp's
+// observed boxes are these with 2 to 5 holes.
 #pragma once
 
 #include "oracle_scenes.hpp"

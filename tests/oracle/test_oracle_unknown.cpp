@@ -17,6 +17,7 @@
 // unknown is just outside and behind the holes) with links inside it, small
 // random maps, and the empty map (every link touches the root cube).
 #include "oracle_engine.hpp"
+#include "oracle_enclosure.hpp"
 #include "oracle_scenes.hpp"
 
 #include <cmath>
@@ -26,63 +27,12 @@ using namespace oracle;
 
 namespace {
 
-struct Hole {
-    int face = 0;
-    Vec3 center = Vec3::Zero();
-    double radius = 0.0;
-};
-
-// Endpoints every half cell on the six faces of the cube [c - h, c + h],
-// except inside the holes.
-std::vector<Vec3> wall_points(const Vec3 &center, double half, double spacing, const std::vector<Hole> &holes) {
-    std::vector<Vec3> points;
-    const int steps = int(std::ceil(2.0 * half / spacing));
-    for (int face = 0; face < 6; ++face) {
-        const int axis = face / 2;
-        const double side = face % 2 ? half : -half;
-        for (int i = 0; i <= steps; ++i)
-            for (int j = 0; j <= steps; ++j) {
-                Vec3 local;
-                local[axis] = side;
-                local[(axis + 1) % 3] = -half + i * spacing;
-                local[(axis + 2) % 3] = -half + j * spacing;
-                const Vec3 p = center + local;
-                bool in_hole = false;
-                for (const Hole &hole : holes) in_hole |= hole.face == face && (p - hole.center).norm() < hole.radius;
-                if (!in_hole) points.push_back(p);
-            }
-    }
-    return points;
-}
-
+// A walled cube observed from inside, with 2 to 5 holes in its walls.
 std::unique_ptr<Scene> observed_box_scene(Rng &rng) {
-    auto scene = std::make_unique<Scene>();
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    options.resolution = rng.uniform(0.1, 0.2);
+    EnclosureOptions options;
     options.free_threshold = rng.chance(0.5) ? 0.4 : 0.5;
-    if (opx_octree_create(&options, &scene->tree) != OPX_OK) std::exit(1);
-    const Vec3 center = rng.point(Vec3::Constant(-2.0), Vec3::Constant(2.0));
-    const double half = 1.05;  // the walls, just outside the 2 m region
-    std::vector<Hole> holes;
-    for (int i = rng.integer(2, 5); i > 0; --i) {
-        Hole hole;
-        hole.face = rng.integer(0, 5);
-        hole.center = center + rng.point(Vec3::Constant(-half), Vec3::Constant(half));
-        hole.radius = rng.uniform(0.15, 0.4);
-        holes.push_back(hole);
-    }
-    const std::vector<Vec3> walls = wall_points(center, half, 0.5 * options.resolution, holes);
-    for (int sensor = 0; sensor < 2; ++sensor) {
-        const opx_pose pose = random_pose(rng, center - Vec3::Constant(0.3), center + Vec3::Constant(0.3));
-        insert_frame(scene->tree, walls, pose, OPX_INSERT_RAYCAST);
-    }
-    scene->low = center - Vec3::Constant(0.9), scene->high = center + Vec3::Constant(0.9);
-    char label[128];
-    std::snprintf(label, sizeof label, "observed box res %.4f centre (%.3f, %.3f, %.3f), %zu holes",
-                  options.resolution, center.x(), center.y(), center.z(), holes.size());
-    scene->label = label;
-    index_scene(*scene, true);
-    return scene;
+    options.min_holes = 2, options.max_holes = 5;
+    return enclosed_scene(rng, options);
 }
 
 std::unique_ptr<Scene> empty_scene(Rng &rng) {
