@@ -31,13 +31,6 @@ void warn_if_fcl_finds_collisions(const Scenes &scenes, const VariantSetup &setu
 }
 
 // The fields every row of one table shares.
-struct RowContext {
-    const char *scene;
-    Variant variant;
-    int queries;
-    const std::string &cpu;
-};
-
 struct Measurement {
     TableRow row;
     QueryTiming timing;
@@ -46,15 +39,7 @@ struct Measurement {
 Measurement measurement(const RowContext &context, const char *pipeline, double t11_ms, double t12_ms,
                         const QueryTiming &timing) {
     Measurement m;
-    m.row.table = "II";
-    m.row.pipeline = pipeline;
-    m.row.scene = context.scene;
-    m.row.variant = variant_letter(context.variant);
-    m.row.t11_ms = t11_ms;
-    m.row.t12_ms = t12_ms;
-    m.row.tq_ms = timing.mean_ms;
-    m.row.queries = context.queries;
-    m.row.cpu = context.cpu;
+    m.row = scene_row("II", context, pipeline, t11_ms, t12_ms, timing.mean_ms);
     m.timing = timing;
     return m;
 }

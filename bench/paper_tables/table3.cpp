@@ -35,13 +35,6 @@ constexpr double kRefereeTolerance = 1e-12;
 constexpr double kGoalSpeedupOverOctree = 20.0;
 
 // The fields every row of one table shares.
-struct RowContext {
-    const char *scene;
-    Variant variant;
-    int queries;
-    const std::string &cpu;
-};
-
 struct Measurement {
     TableRow row;
     DistanceTiming timing;
@@ -50,15 +43,7 @@ struct Measurement {
 Measurement measurement(const RowContext &context, const char *pipeline, double t11_ms, double t12_ms,
                         const DistanceTiming &timing) {
     Measurement m;
-    m.row.table = "III";
-    m.row.pipeline = pipeline;
-    m.row.scene = context.scene;
-    m.row.variant = variant_letter(context.variant);
-    m.row.t11_ms = t11_ms;
-    m.row.t12_ms = t12_ms;
-    m.row.tq_ms = timing.mean_ms;
-    m.row.queries = context.queries;
-    m.row.cpu = context.cpu;
+    m.row = scene_row("III", context, pipeline, t11_ms, t12_ms, timing.mean_ms);
     m.row.totals_of_queries = {1};  // the paper's T_1 + T_q
     m.row.distance_m = timing.distance;
     m.timing = timing;

@@ -56,4 +56,19 @@ VariantSetup make_variant_setup(const Scenes &scenes, Variant variant, const Ben
     return setup;
 }
 
+TableRow scene_row(const char *table, const RowContext &context, const char *pipeline, double t11_ms,
+                   double t12_ms, double tq_ms) {
+    TableRow row;
+    row.table = table;
+    row.pipeline = pipeline;
+    row.scene = context.scene;
+    row.variant = variant_letter(context.variant);
+    row.t11_ms = t11_ms;
+    row.t12_ms = t12_ms;
+    row.tq_ms = tq_ms;
+    row.queries = context.queries;
+    row.cpu = context.cpu;
+    return row;
+}
+
 }  // namespace paper_tables

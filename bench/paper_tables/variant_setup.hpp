@@ -9,6 +9,7 @@
 #include "fcl_pipelines.hpp"
 #include "opx_pipelines.hpp"
 #include "options.hpp"
+#include "report.hpp"
 #include "scene.hpp"
 
 namespace paper_tables {
@@ -19,6 +20,18 @@ struct Scenes {
     std::vector<SceneObject> hit;   // scene H
     std::vector<SceneObject> free;  // scene F
 };
+
+// What every row of one scene and variant shares.
+struct RowContext {
+    const char *scene;
+    Variant variant;
+    int queries;
+    const std::string &cpu;
+};
+
+// A table row (`table` "II", "III") of one pipeline on that scene.
+TableRow scene_row(const char *table, const RowContext &context, const char *pipeline, double t11_ms,
+                   double t12_ms, double tq_ms);
 
 // Builds the maps and both scenes, and prints one line about them.
 Scenes make_scenes();
