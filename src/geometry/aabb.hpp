@@ -29,6 +29,7 @@ struct Aabb {
         const Vec3 gap = (b.lo - hi).cwiseMax(lo - b.hi).cwiseMax(0.0);
         return gap.squaredNorm();
     }
+    double volume() const { return (hi - lo).cwiseMax(0.0).prod(); }
     double surface_area() const {
         const Vec3 e = (hi - lo).cwiseMax(0.0);
         return 2.0 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());

@@ -10,8 +10,6 @@ namespace {
 
 Aabb intersection(const Aabb &a, const Aabb &b) { return Aabb{a.lo.cwiseMax(b.lo), a.hi.cwiseMin(b.hi)}; }
 
-double volume(const Aabb &b) { return (b.hi - b.lo).cwiseMax(0.0).prod(); }
-
 auto order_key(uint32_t link, const CellKey &c) {
     return std::make_tuple(link, c.depth, c.key[0], c.key[1], c.key[2]);
 }
@@ -34,23 +32,29 @@ CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t 
                                  return order_key(a.link, a.cell) == order_key(b.link, b.cell);
                              }),
                  pairs_.end());
-    CostSummary summary;
     out.clear();
     for (const Pair &p : pairs_) {
         CostBox box;
         box.box = intersection(p.region, link_boxes[p.link]);
         if (!keep_flat && !(box.box.lo.array() < box.box.hi.array()).all()) continue;  // no volume: no box
         box.probability = p.probability;
-        box.cost = p.probability * volume(box.box);
         box.link = p.link, box.cell_class = p.cell_class, box.cell = p.cell;
-        summary.total += box.cost;
         out.push_back(box);
     }
-    summary.box_count = out.size();
-    const size_t kept = std::min<size_t>(keep, out.size());
-    std::partial_sort(out.begin(), out.begin() + kept, out.end(),
+    return keep_costliest(out, keep);
+}
+
+CostSummary keep_costliest(std::vector<CostBox> &boxes, uint32_t keep) {
+    CostSummary summary;
+    for (CostBox &box : boxes) {
+        box.cost = box.probability * box.box.volume();
+        summary.total += box.cost;
+    }
+    summary.box_count = boxes.size();
+    const size_t kept = std::min<size_t>(keep, boxes.size());
+    std::partial_sort(boxes.begin(), boxes.begin() + kept, boxes.end(),
                       [](const CostBox &a, const CostBox &b) { return a.cost > b.cost; });
-    out.resize(kept);
+    boxes.resize(kept);
     return summary;
 }
 

@@ -49,6 +49,10 @@ private:
     std::vector<Pair> pairs_;
 };
 
+// Prices every box (probability x volume), sums them, and keeps the
+// `keep` costliest, costliest first.
+CostSummary keep_costliest(std::vector<CostBox> &boxes, uint32_t keep);
+
 // Bounding box of each link (union of its enabled shapes' padded boxes).
 class LinkSet;
 void link_boxes(const LinkSet &links, std::vector<Aabb> &out);

@@ -8,8 +8,6 @@ namespace {
 
 auto cell_order(const CellKey &c) { return std::make_tuple(c.depth, c.key[0], c.key[1], c.key[2]); }
 
-double volume(const Aabb &b) { return (b.hi - b.lo).cwiseMax(0.0).prod(); }
-
 }  // namespace
 
 // A private copy of the link set takes each waypoint's poses, so the
@@ -44,17 +42,7 @@ CostSummary PathQuery::finish_cost(uint32_t keep, std::vector<CostBox> &out) {
     out.erase(std::remove_if(out.begin(), out.end(),
                              [](const CostBox &b) { return !(b.box.lo.array() < b.box.hi.array()).all(); }),
               out.end());
-    CostSummary summary;
-    for (CostBox &box : out) {
-        box.cost = box.probability * volume(box.box);
-        summary.total += box.cost;
-    }
-    summary.box_count = out.size();
-    const size_t kept = std::min<size_t>(keep, out.size());
-    std::partial_sort(out.begin(), out.begin() + kept, out.end(),
-                      [](const CostBox &a, const CostBox &b) { return a.cost > b.cost; });
-    out.resize(kept);
-    return summary;
+    return keep_costliest(out, keep);
 }
 
 }  // namespace octoprox
