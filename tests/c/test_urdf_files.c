@@ -69,6 +69,19 @@ static void assert_meshes_match_hand_built(const opx_linkset *robot) {
     opx_pose poses[4];
     for (uint32_t i = 0; i < 4; ++i) poses[i] = get_pose(robot, i);
     assert_ok(opx_linkset_set_poses(hand, poses, 4, 0));
+    /* The stored mesh: 4 triangles over the 4 scaled corners (float precision). */
+    opx_shape stored = OPX_SHAPE_INIT;
+    assert_ok(opx_linkset_get_shape(robot, 1, 0, &stored));
+    assert_int_equal(stored.kind, OPX_SHAPE_MESH);
+    assert_int_equal(stored.vertex_count, 4);
+    assert_int_equal(stored.triangle_count, 4);
+    double max[3] = {0, 0, 0};
+    for (size_t v = 0; v < 4; ++v)
+        for (int k = 0; k < 3; ++k) max[k] = fmax(max[k], stored.vertices[3 * v + k]);
+    assert_near(max[0], 0.2, 1e-7);
+    assert_near(max[1], 0.1, 1e-7);
+    assert_near(max[2], 0.3, 1e-7);
+    assert_true(stored.pose.position[0] == 0.1);
     const linkset_snapshot a = take_linkset_snapshot(robot), b = take_linkset_snapshot(hand);
     for (uint32_t i = 1; i < 4; ++i) {
         assert_true(isfinite(a.link_distance[i]));
