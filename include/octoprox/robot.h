@@ -23,8 +23,10 @@
  *     <visual> elements are ignored (their files need not exist).
  *   - Meshes are read with assimp (STL, DAE, OBJ and the other formats it
  *     knows): all meshes of a file are merged into one triangle mesh with
- *     the file's node transforms applied (so a DAE's unit and up axis are
- *     honoured as assimp applies them), then the URDF scale.  A mesh is a
+ *     the file's node transforms applied, then the URDF scale.  A DAE's
+ *     <unit> is applied (its coordinates become metres); its <up_axis> is
+ *     not turned into assimp's Y-up, so coordinates stay as written (z up),
+ *     as ROS tools (RViz, MoveIt) read them.  A mesh is a
  *     SURFACE (see linkset.h): a cell wholly inside a closed mesh touches no
  *     triangle.
  *   - Other collision geometry (e.g. <capsule>) fails the load with
