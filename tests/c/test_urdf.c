@@ -300,6 +300,43 @@ static void a_link_added_later_keeps_its_pose(void **state) {
     opx_linkset_destroy(robot);
 }
 
+/* Chains a -> b -> c of prismatic joints along x: b mimics a (3 a + 0.5),
+ * c mimics b (2 b + 1); p is planar and f floating: both stay at their
+ * origin whatever their values. */
+static const char CHAIN_URDF[] =
+    "<robot name=\"chain\"><link name=\"l0\"/><link name=\"l1\"/><link name=\"l2\"/><link name=\"l3\"/>"
+    "<link name=\"l4\"/><link name=\"l5\"/>"
+    "<joint name=\"c\" type=\"prismatic\"><parent link=\"l2\"/><child link=\"l3\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/><mimic joint=\"b\" multiplier=\"2\" offset=\"1\"/></joint>"
+    "<joint name=\"a\" type=\"prismatic\"><parent link=\"l0\"/><child link=\"l1\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/></joint>"
+    "<joint name=\"b\" type=\"prismatic\"><parent link=\"l1\"/><child link=\"l2\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/><mimic joint=\"a\" multiplier=\"3\" offset=\"0.5\"/></joint>"
+    "<joint name=\"p\" type=\"planar\"><parent link=\"l0\"/><child link=\"l4\"/><origin xyz=\"0 1 0\"/></joint>"
+    "<joint name=\"f\" type=\"floating\"><parent link=\"l4\"/><child link=\"l5\"/><origin xyz=\"0 0 1\"/></joint>"
+    "</robot>";
+
+static void mimic_chains_compose_and_planar_floating_stay_put(void **state) {
+    (void)state;
+    opx_linkset *robot = NULL;
+    assert_ok(opx_linkset_load_urdf_string(CHAIN_URDF, NULL, &robot));
+    assert_int_equal(info_of(robot, 3).type, OPX_JOINT_PLANAR);
+    assert_int_equal(info_of(robot, 4).type, OPX_JOINT_FLOATING);
+    const double q[5] = {7.0, 0.1, 7.0, 5.0, 5.0}; /* c, a, b, p, f */
+    assert_ok(opx_linkset_set_joint_positions(robot, q, 5, NULL));
+    double positions[5];
+    size_t count = 0;
+    assert_ok(opx_linkset_get_joint_positions(robot, positions, 5, &count));
+    assert_near(positions[1], 0.1, 1e-15);
+    assert_near(positions[2], 0.8, 1e-15);        /* 3 * 0.1 + 0.5 */
+    assert_near(positions[0], 2.6, 1e-15);        /* 2 * 0.8 + 1 */
+    assert_true(positions[3] == 0.0 && positions[4] == 0.0);
+    assert_near(get_pose(robot, 3).position[0], 0.1 + 0.8 + 2.6, 1e-14);
+    const opx_pose l5 = get_pose(robot, 5);
+    assert_true(l5.position[0] == 0.0 && l5.position[1] == 1.0 && l5.position[2] == 1.0);
+    opx_linkset_destroy(robot);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(links_shapes_and_joints_come_from_the_file),
@@ -311,6 +348,7 @@ int main(void) {
         cmocka_unit_test(get_shape_round_trips_hand_added_shapes),
         cmocka_unit_test(clone_copies_the_joint_tree),
         cmocka_unit_test(a_link_added_later_keeps_its_pose),
+        cmocka_unit_test(mimic_chains_compose_and_planar_floating_stay_put),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -82,6 +82,12 @@ static void malformed_urdfs_are_corrupt(void **state) {
                         "<joint name=\"j\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/>"
                         "<mimic joint=\"ghost\"/></joint></robot>",
                         OPX_ERROR_CORRUPT, "mimics joint 'ghost'");
+    expect_load_failure("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
+                        "<joint name=\"j\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/>"
+                        "<mimic joint=\"k\"/></joint>"
+                        "<joint name=\"k\" type=\"continuous\"><parent link=\"b\"/><child link=\"c\"/>"
+                        "<mimic joint=\"j\"/></joint></robot>",
+                        OPX_ERROR_CORRUPT, "its mimic joints form a loop");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"/><link name=\"a\"/></robot>", OPX_ERROR_CORRUPT,
                         "two links have the same name");
     /* Two roots: urdfdom refuses the tree. */
