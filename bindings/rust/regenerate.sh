@@ -14,7 +14,7 @@ bindgen="${BINDGEN:-/usr/bin/bindgen}"
 command -v "$bindgen" >/dev/null || bindgen=bindgen
 
 "$bindgen" "$include_dir/octoprox/octoprox.h" \
-    --no-rustfmt-bindings --size_t-is-usize --no-doc-comments \
+    --no-rustfmt-bindings --size_t-is-usize --no-doc-comments --with-derive-partialeq \
     --default-macro-constant-type signed \
     --allowlist-function 'opx_.*' --allowlist-type 'opx_.*' --allowlist-var 'OPX_.*' \
     -- -I"$include_dir" |

@@ -56,6 +56,8 @@ default_from_init! {
     opx_distance_result => opx_distance_result_init,
     opx_path_request => opx_path_request_init,
     opx_path_result => opx_path_result_init,
+    opx_urdf_options => opx_urdf_options_init,
+    opx_joint_info => opx_joint_info_init,
 }
 
 impl Default for opx_pose {

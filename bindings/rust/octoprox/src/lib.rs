@@ -3,7 +3,8 @@
 //! point-cloud sensor frames.
 //!
 //! * [`Octree`]: the map (insert sensor frames, classify, leaves, files).
-//! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses).
+//! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses), built by
+//!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
 //!   [`Query::path`].
 //!
@@ -22,12 +23,14 @@ mod linkset;
 mod octree;
 mod points;
 mod query;
+mod robot;
 
 pub use error::{status_name, Error, Result};
 pub use linkset::{LinkSet, Shape, ShapeKind};
 pub use octree::Octree;
 pub use points::Points;
 pub use query::Query;
+pub use robot::{JointInfo, UrdfOptions};
 
 use octoprox_sys as sys;
 
@@ -58,7 +61,8 @@ pub mod consts {
         OPX_ENGINE_AMORTIZED, OPX_ENGINE_DIRECT, OPX_ERROR_BUFFER_TOO_SMALL, OPX_ERROR_CORRUPT,
         OPX_ERROR_INTERNAL, OPX_ERROR_INVALID_ARGUMENT, OPX_ERROR_IO, OPX_ERROR_OUT_OF_MEMORY,
         OPX_ERROR_UNSUPPORTED, OPX_ERROR_VERSION, OPX_FORMAT_AUTO, OPX_FORMAT_BT, OPX_FORMAT_OT,
-        OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
+        OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
+        OPX_JOINT_FLOATING, OPX_JOINT_NONE, OPX_JOINT_PLANAR, OPX_JOINT_PRISMATIC, OPX_JOINT_REVOLUTE, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
         OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OK, OPX_UNKNOWN_FREE, OPX_UNKNOWN_OCCUPIED,
         OPX_VERSION_MAJOR, OPX_VERSION_MINOR, OPX_VERSION_PATCH,
     };

@@ -199,6 +199,15 @@ impl LinkSet {
         self.raw
     }
 
+    pub(crate) fn as_raw_mut(&mut self) -> *mut sys::opx_linkset {
+        self.raw
+    }
+
+    /// Takes ownership of a handle a constructor returned.
+    pub(crate) fn from_raw(raw: *mut sys::opx_linkset) -> LinkSet {
+        LinkSet { raw }
+    }
+
     /// Checks that `poses` holds whole waypoints of one pose per link and
     /// returns the number of waypoints.
     pub(crate) fn waypoint_count(&self, poses: &[Pose], what: &str) -> Result<usize> {
