@@ -16,12 +16,14 @@ from ._errors import (BufferTooSmallError, CorruptDataError, InternalError,
                       UnsupportedError, VersionError)
 from ._library import HEADER_VERSION, lib
 from ._structs import (CellInfo, CollisionRequest, CollisionResult, Contact, CostBox,
-                       DistanceRequest, DistanceResult, InsertOptions, InsertReport, Leaf,
-                       OctreeOptions, OctreeStats, PathRequest, PathResult, Pose,
-                       QueryOptions, QueryStats)
+                       DistanceRequest, DistanceResult, InsertOptions, InsertReport,
+                       JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest, PathResult,
+                       Pose, QueryOptions, QueryStats, UrdfOptions)
 from .linkset import LinkSet
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
                      MASK_OCCUPIED, MASK_UNCERTAIN, Octree)
+from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, JOINT_PLANAR,
+                    JOINT_PRISMATIC, JOINT_REVOLUTE)
 from .query import ENGINE_AMORTIZED, ENGINE_DIRECT, UNKNOWN_FREE, UNKNOWN_OCCUPIED, Query
 
 CELL_UNKNOWN, CELL_FREE, CELL_UNCERTAIN, CELL_OCCUPIED = 0, 1, 2, 3

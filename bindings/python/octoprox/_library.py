@@ -91,6 +91,18 @@ SIGNATURES = {
     "opx_linkset_set_link_enabled": (status, [handle, c_uint32, c_int32]),
     "opx_linkset_set_poses": (status, [handle, c_void_p, c_size_t, c_size_t]),
     "opx_linkset_get_pose": (status, [handle, c_uint32, P(s.Pose)]),
+    # robot.h
+    "opx_linkset_load_urdf_file": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
+    "opx_linkset_load_urdf_string": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
+    "opx_linkset_joint_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_find_joint": (status, [handle, c_char_p, P(c_uint32)]),
+    "opx_linkset_joint_info": (status, [handle, c_uint32, P(s.JointInfo)]),
+    "opx_linkset_set_joint_positions": (status, [handle, c_void_p, c_size_t, P(s.Pose)]),
+    "opx_linkset_set_named_joint_positions": (status, [handle, P(c_char_p), c_void_p, c_size_t,
+                                                       P(s.Pose)]),
+    "opx_linkset_get_joint_positions": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
+    "opx_linkset_disabled_pair_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_disabled_pair": (status, [handle, c_uint32, P(c_uint32), P(c_uint32)]),
     # query.h
     "opx_query_create": (status, [P(s.QueryOptions), P(handle)]),
     "opx_query_destroy": (None, [handle]),

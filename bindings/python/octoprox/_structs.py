@@ -148,6 +148,34 @@ class PathResult(Struct):
                 ("narrow_tests", c_uint64)]
 
 
+class UrdfOptions(Struct):
+    _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
+                ("package_dirs", ctypes.POINTER(ctypes.c_char_p)),
+                ("package_dir_count", c_size_t), ("base_dir", ctypes.c_char_p),
+                ("srdf_path", ctypes.c_char_p)]
+
+
+class JointInfo(Struct):
+    """One URDF joint; ``name`` is decoded to str, link indices and
+    ``mimic_joint`` are JOINT_NONE when absent."""
+    _fields_ = [("struct_size", c_uint32), ("type", c_int32), ("_name", ctypes.c_char_p),
+                ("parent_link", c_uint32), ("child_link", c_uint32), ("axis", D3),
+                ("origin", Pose), ("has_limits", c_int32), ("mimic_joint", c_uint32),
+                ("lower", c_double), ("upper", c_double), ("velocity", c_double),
+                ("effort", c_double), ("mimic_multiplier", c_double),
+                ("mimic_offset", c_double)]
+
+    @property
+    def name(self):
+        return (self._name or b"").decode("utf-8", "replace")
+
+    def to_dict(self):
+        out = super().to_dict()
+        out["name"] = self.name
+        del out["_name"]
+        return out
+
+
 # Each versioned struct and the name of its opx_x_init function.
 VERSIONED = {
     OctreeOptions: "opx_octree_options_init",
@@ -166,4 +194,6 @@ VERSIONED = {
     DistanceResult: "opx_distance_result_init",
     PathRequest: "opx_path_request_init",
     PathResult: "opx_path_result_init",
+    UrdfOptions: "opx_urdf_options_init",
+    JointInfo: "opx_joint_info_init",
 }

@@ -5,6 +5,7 @@ from . import _structs as s
 from ._arrays import pose_array, pose_strides, triangle_array, vertex_array
 from ._handle import Handle
 from ._library import init_struct, lib, make_pose
+from .robot import RobotModel
 
 SHAPE_SPHERE, SHAPE_BOX, SHAPE_CYLINDER, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_MESH = range(1, 7)
 
@@ -13,21 +14,26 @@ def _name(text):
     return text.encode() if isinstance(text, str) else bytes(text)
 
 
-class LinkSet(Handle):
+class LinkSet(Handle, RobotModel):
     """A robot as links, each with shapes (metres, in the link frame), a
-    padding, an enabled flag and a pose in the map frame.  Reading methods
-    may run on many threads at once; changing ones need it to themselves.
+    padding, an enabled flag and a pose in the map frame; built by hand or
+    from URDF (LinkSet.from_urdf).  Reading methods may run on many threads
+    at once; changing ones need it to themselves.
     """
     _destroy = "opx_linkset_destroy"
 
     def __init__(self):
         super().__init__(lib.opx_linkset_create)
 
+    @classmethod
+    def _from(cls, create):
+        links = cls.__new__(cls)
+        Handle.__init__(links, create)
+        return links
+
     def clone(self):
-        """A deep copy (shapes, names, poses, paddings, enabled flags)."""
-        copy = LinkSet.__new__(LinkSet)
-        Handle.__init__(copy, lambda out: lib.opx_linkset_clone(self, out))
-        return copy
+        """A deep copy (shapes, names, poses, paddings, enabled flags, joints)."""
+        return LinkSet._from(lambda out: lib.opx_linkset_clone(self, out))
 
     def add_link(self, name):
         """Adds a link with an identity pose; returns its index."""
