@@ -41,3 +41,21 @@ def status_name(status):
 
 
 __version__ = "%d.%d.%d" % HEADER_VERSION
+
+__all__ = [
+    "Octree", "LinkSet", "Query", "version", "status_name", "HEADER_VERSION", "lib",
+    # results, requests and options (the C structs)
+    "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox", "DistanceRequest",
+    "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
+    "OctreeStats", "PathRequest", "PathResult", "Pose", "QueryOptions", "QueryStats",
+    "UrdfOptions",
+    # exceptions
+    "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
+    "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",
+    # constants
+    "CELL_UNKNOWN", "CELL_FREE", "CELL_UNCERTAIN", "CELL_OCCUPIED", "INSERT_RAYCAST",
+    "INSERT_ENDPOINTS", "MASK_FREE", "MASK_UNCERTAIN", "MASK_OCCUPIED", "MASK_ALL_KNOWN",
+    "FORMAT_AUTO", "FORMAT_BT", "FORMAT_OT", "ENGINE_DIRECT", "ENGINE_AMORTIZED",
+    "UNKNOWN_FREE", "UNKNOWN_OCCUPIED", "JOINT_FIXED", "JOINT_REVOLUTE", "JOINT_CONTINUOUS",
+    "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE",
+]

@@ -8,10 +8,20 @@ from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, invalid, pose_array, pose_st
 from ._errors import BufferTooSmallError
 from ._handle import Handle
 from ._library import init_struct, lib
+from .linkset import LinkSet
+from .octree import Octree
 
 ENGINE_DIRECT, ENGINE_AMORTIZED = 1, 2
 UNKNOWN_FREE, UNKNOWN_OCCUPIED = 0, 1
 _ENGINES = {"direct": ENGINE_DIRECT, "amortized": ENGINE_AMORTIZED}
+
+
+def _check_operands(tree, links, where):
+    # The C handles are untyped pointers to ctypes: a swapped argument would
+    # reach the library as the wrong object, so check the Python types here.
+    if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
+        raise TypeError(f"{where}: expected an Octree and a LinkSet, got "
+                        f"{type(tree).__name__} and {type(links).__name__}")
 
 
 class Query(Handle):
@@ -39,6 +49,7 @@ class Query(Handle):
     def collide(self, tree, links, **request):
         """Does the link set collide with the octree?  Read the contacts and
         cost boxes with contacts() and cost_boxes()."""
+        _check_operands(tree, links, "Query.collide")
         req = init_struct(s.CollisionRequest, **request)
         out = init_struct(s.CollisionResult)
         self._contact_count = self._cost_box_count = 0
@@ -67,6 +78,7 @@ class Query(Handle):
     def distance(self, tree, links, **request):
         """The minimum distance between the enabled links and the obstacles;
         with per_link=True, link_distances() gives each link's."""
+        _check_operands(tree, links, "Query.distance")
         req = init_struct(s.DistanceRequest, **request)
         out = init_struct(s.DistanceResult)
         lib.opx_query_distance(self, tree, links, req, out)
@@ -86,6 +98,7 @@ class Query(Handle):
     def path(self, tree, links, poses, **request):
         """Checks a path: poses of shape (waypoints, links, 7) (or 3:
         positions), map frame; a float64 array is read in place by stride."""
+        _check_operands(tree, links, "Query.path")
         arr = pose_array(poses, "Query.path", 3)
         if arr.shape[1] != links.link_count:
             raise invalid(f"Query.path: poses have {arr.shape[1]} links per waypoint, the "

@@ -75,6 +75,8 @@ class ErrorMapping(unittest.TestCase):
             octoprox.Octree().insert_points(np.zeros((4, 2)))
         with self.assertRaises(TypeError):
             octoprox.Query().collide(one_cell_map(), robot, max_contact=3)  # a typo
+        with self.assertRaises(TypeError):
+            octoprox.Query().distance(robot, one_cell_map())  # swapped handles
         with self.assertRaises(ValueError):
             octoprox.Query(engine=42)
         robot.set_poses([[0.35, C0, C0]])

@@ -48,6 +48,26 @@ class StructsMatchTheLibrary(unittest.TestCase):
         self.assertEqual(_library.init_struct(octoprox.InsertOptions).max_range, -1.0)
 
 
+class ConstantsMatchTheHeaders(unittest.TestCase):
+    def test_every_integer_define_has_the_header_value(self):
+        from octoprox import _arrays, _errors, linkset
+        folder = os.path.join(REPO, "include", "octoprox")
+        defines = {}
+        for header in os.listdir(folder):
+            with open(os.path.join(folder, header)) as f:
+                # Plain integers only (a comment may follow), not expressions.
+                pattern = r"^#define OPX_(\w+) \(?(-?\d+)u?\)?[ \t]*(?:/\*.*)?$"
+                for name, value in re.findall(pattern, f.read(), re.M):
+                    defines[name] = int(value)
+        checked = 0
+        for name, value in defines.items():
+            for module in (octoprox, _errors, _arrays, linkset):
+                if hasattr(module, name):
+                    self.assertEqual(getattr(module, name), value, name)
+                    checked += 1
+        self.assertGreater(checked, 30)  # cells, errors, shapes, formats, joints...
+
+
 class Versions(unittest.TestCase):
     def test_header_version_matches_the_c_header(self):
         with open(os.path.join(REPO, "include", "octoprox", "common.h")) as f:
