@@ -35,6 +35,11 @@ def version():
     return lib.opx_version().decode()
 
 
+def version_number():
+    """The run-time OPX_VERSION_NUMBER (major * 10000 + minor * 100 + patch)."""
+    return lib.opx_version_number()
+
+
 def status_name(status):
     """The name of a status code, e.g. "OPX_ERROR_IO"."""
     return lib.opx_status_name(status).decode()
@@ -43,7 +48,7 @@ def status_name(status):
 __version__ = "%d.%d.%d" % HEADER_VERSION
 
 __all__ = [
-    "Octree", "LinkSet", "Query", "version", "status_name", "HEADER_VERSION", "lib",
+    "Octree", "LinkSet", "Query", "version", "version_number", "status_name", "HEADER_VERSION", "lib",
     # results, requests and options (the C structs)
     "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox", "DistanceRequest",
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",

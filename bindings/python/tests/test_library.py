@@ -78,6 +78,8 @@ class Versions(unittest.TestCase):
 
     def test_runtime_version(self):
         self.assertEqual(octoprox.version(), "%d.%d.%d" % octoprox.HEADER_VERSION)
+        major, minor, patch = octoprox.HEADER_VERSION
+        self.assertEqual(octoprox.version_number(), major * 10000 + minor * 100 + patch)
         self.assertEqual(octoprox.status_name(-6), "OPX_ERROR_IO")
 
 

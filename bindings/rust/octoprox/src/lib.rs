@@ -79,12 +79,17 @@ pub fn version() -> String {
     unsafe { error::c_string(sys::opx_version()) }
 }
 
+/// The run-time `OPX_VERSION_NUMBER` (major * 10000 + minor * 100 + patch).
+pub fn version_number() -> u32 {
+    // SAFETY: no arguments.
+    unsafe { sys::opx_version_number() }
+}
+
 /// Checks that the linked library is compatible with the headers these
 /// bindings were generated from: same major version, minor at least as
 /// new.  Every constructor calls it.
 pub fn check_version() -> Result<()> {
-    // SAFETY: no arguments.
-    let number = unsafe { sys::opx_version_number() } as i32;
+    let number = version_number() as i32;
     let (major, minor) = (number / 10000, number / 100 % 100);
     if major == sys::OPX_VERSION_MAJOR && minor >= sys::OPX_VERSION_MINOR {
         return Ok(());

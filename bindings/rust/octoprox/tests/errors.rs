@@ -14,6 +14,9 @@ fn invalid_options_name_the_function_and_field() {
     assert!(error.message().contains("resolution"), "{}", error);
     assert!(error.to_string().contains("OPX_ERROR_INVALID_ARGUMENT"));
     assert_eq!(status_name(OPX_ERROR_IO), "OPX_ERROR_IO");
+    let number = (OPX_VERSION_MAJOR * 10000 + OPX_VERSION_MINOR * 100 + OPX_VERSION_PATCH) as u32;
+    assert_eq!(octoprox::version_number(), number);
+    assert!(octoprox::check_version().is_ok());
 }
 
 #[test]
