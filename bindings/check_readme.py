@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """ctest readme_examples: every code block of README.md preceded by a
 `<!-- example: PATH -->` line must equal the file PATH (relative to the
-repository), and those files must run.  Usage:
+repository), and those files must run and print "collided: true" (any
+case: both examples check a hand placed in a sensor frame's obstacle).
+Usage:
     check_readme.py REPO PYTHON [CARGO]
 Python examples run with PYTHON; Rust examples (bindings/rust/octoprox/
 examples/NAME.rs) with `CARGO run --offline --example NAME` when CARGO is
