@@ -1,5 +1,5 @@
 /*
- * URDF files on disk: mesh files (ASCII STL, OBJ) found by relative,
+ * URDF files on disk: mesh files (ASCII STL, OBJ, DAE) found by relative,
  * package:// (all three package_dirs forms) and file:// names, the URDF
  * scale applied, a URDF file's folder as the default base, and SRDF
  * disabled pairs.  Each test writes its files into a fresh /tmp folder.
@@ -69,6 +69,19 @@ static void assert_meshes_match_hand_built(const opx_linkset *robot) {
     opx_pose poses[4];
     for (uint32_t i = 0; i < 4; ++i) poses[i] = get_pose(robot, i);
     assert_ok(opx_linkset_set_poses(hand, poses, 4, 0));
+    /* The stored mesh: 4 triangles over the 4 scaled corners (float precision). */
+    opx_shape stored = OPX_SHAPE_INIT;
+    assert_ok(opx_linkset_get_shape(robot, 1, 0, &stored));
+    assert_int_equal(stored.kind, OPX_SHAPE_MESH);
+    assert_int_equal(stored.vertex_count, 4);
+    assert_int_equal(stored.triangle_count, 4);
+    double max[3] = {0, 0, 0};
+    for (size_t v = 0; v < 4; ++v)
+        for (int k = 0; k < 3; ++k) max[k] = fmax(max[k], stored.vertices[3 * v + k]);
+    assert_near(max[0], 0.2, 1e-7);
+    assert_near(max[1], 0.1, 1e-7);
+    assert_near(max[2], 0.3, 1e-7);
+    assert_true(stored.pose.position[0] == 0.1);
     const linkset_snapshot a = take_linkset_snapshot(robot), b = take_linkset_snapshot(hand);
     for (uint32_t i = 1; i < 4; ++i) {
         assert_true(isfinite(a.link_distance[i]));
@@ -141,6 +154,48 @@ static void a_string_uses_base_dir_for_relative_meshes(void **state) {
     remove_scratch_dir(&d);
 }
 
+/* A Collada triangle in centimetres, z up, under a node moved 10 cm up. */
+static const char TRIANGLE_DAE[] =
+    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+    "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+    "<asset><unit name=\"centimeter\" meter=\"0.01\"/><up_axis>Z_UP</up_axis></asset>\n"
+    "<library_geometries><geometry id=\"tri\"><mesh>\n"
+    "<source id=\"pos\"><float_array id=\"pos-array\" count=\"9\">0 0 0 100 0 0 0 0 50</float_array>\n"
+    "<technique_common><accessor source=\"#pos-array\" count=\"3\" stride=\"3\">"
+    "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/>"
+    "</accessor></technique_common></source>\n"
+    "<vertices id=\"vtx\"><input semantic=\"POSITION\" source=\"#pos\"/></vertices>\n"
+    "<triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#vtx\" offset=\"0\"/><p>0 1 2</p></triangles>\n"
+    "</mesh></geometry></library_geometries>\n"
+    "<library_visual_scenes><visual_scene id=\"scene\"><node id=\"n\"><translate>0 0 10</translate>"
+    "<instance_geometry url=\"#tri\"/></node></visual_scene></library_visual_scenes>\n"
+    "<scene><instance_visual_scene url=\"#scene\"/></scene>\n"
+    "</COLLADA>\n";
+
+/* The DAE's unit and node transform apply; its up axis does not rotate it. */
+static void dae_units_and_nodes_apply_z_stays_up(void **state) {
+    (void)state;
+    const scratch_dir d = make_scratch_dir();
+    write_scratch(&d, "tri.dae", TRIANGLE_DAE);
+    opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
+    options.base_dir = d.path;
+    opx_linkset *robot = NULL;
+    assert_ok(opx_linkset_load_urdf_string("<robot name=\"r\"><link name=\"a\"><collision><geometry>"
+                                           "<mesh filename=\"tri.dae\"/></geometry></collision></link></robot>",
+                                           &options, &robot));
+    opx_shape s = OPX_SHAPE_INIT;
+    assert_ok(opx_linkset_get_shape(robot, 0, 0, &s));
+    assert_int_equal(s.kind, OPX_SHAPE_MESH);
+    assert_int_equal(s.triangle_count, 1);
+    assert_int_equal(s.vertex_count, 3);
+    static const double expected[9] = {0, 0, 0.1, 1, 0, 0.1, 0, 0, 0.6};
+    for (int v = 0; v < 3; ++v)
+        for (int k = 0; k < 3; ++k)
+            assert_near(s.vertices[3 * s.indices[v] + k], expected[3 * v + k], 1e-7);
+    opx_linkset_destroy(robot);
+    remove_scratch_dir(&d);
+}
+
 static void srdf_disabled_pairs_are_read(void **state) {
     (void)state;
     const scratch_dir d = make_scratch_dir();
@@ -179,6 +234,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(meshes_resolve_by_every_path_form),
         cmocka_unit_test(a_string_uses_base_dir_for_relative_meshes),
+        cmocka_unit_test(dae_units_and_nodes_apply_z_stays_up),
         cmocka_unit_test(srdf_disabled_pairs_are_read),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
