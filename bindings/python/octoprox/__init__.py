@@ -19,7 +19,8 @@ from ._structs import (CellInfo, CollisionRequest, CollisionResult, Contact, Cos
                        DistanceRequest, DistanceResult, InsertOptions, InsertReport,
                        JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest, PathResult,
                        Pose, QueryOptions, QueryStats, UrdfOptions)
-from .linkset import LinkSet
+from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
+                      SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
                      MASK_OCCUPIED, MASK_UNCERTAIN, Octree)
 from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, JOINT_PLANAR,
@@ -62,5 +63,6 @@ __all__ = [
     "INSERT_ENDPOINTS", "MASK_FREE", "MASK_UNCERTAIN", "MASK_OCCUPIED", "MASK_ALL_KNOWN",
     "FORMAT_AUTO", "FORMAT_BT", "FORMAT_OT", "ENGINE_DIRECT", "ENGINE_AMORTIZED",
     "UNKNOWN_FREE", "UNKNOWN_OCCUPIED", "JOINT_FIXED", "JOINT_REVOLUTE", "JOINT_CONTINUOUS",
-    "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE",
+    "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE", "SHAPE_SPHERE",
+    "SHAPE_BOX", "SHAPE_CYLINDER", "SHAPE_CAPSULE", "SHAPE_CONVEX", "SHAPE_MESH",
 ]

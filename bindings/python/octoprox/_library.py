@@ -83,6 +83,7 @@ SIGNATURES = {
     "opx_linkset_add_link": (status, [handle, c_char_p, P(c_uint32)]),
     "opx_linkset_add_shape": (status, [handle, c_uint32, P(s.Shape), P(c_uint32)]),
     "opx_linkset_link_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_get_shape": (status, [handle, c_uint32, c_uint32, P(s.Shape)]),
     "opx_linkset_shape_count": (status, [handle, c_uint32, P(c_uint32)]),
     "opx_linkset_link_name": (status, [handle, c_uint32, P(c_char_p)]),
     "opx_linkset_find_link": (status, [handle, c_char_p, P(c_uint32)]),

@@ -1,5 +1,8 @@
 """The robot: a set of links with shapes (opx_linkset)."""
 import ctypes
+from types import SimpleNamespace
+
+import numpy as np
 
 from . import _structs as s
 from ._arrays import pose_array, pose_strides, triangle_array, vertex_array
@@ -92,6 +95,24 @@ class LinkSet(Handle, RobotModel):
         count = ctypes.c_uint32()
         lib.opx_linkset_shape_count(self, link, ctypes.byref(count))
         return count.value
+
+    def shape(self, link, shape):
+        """Shape `shape` of `link` as stored: a namespace with kind
+        (SHAPE_*), pose (7 floats, link frame), radius, length, size, and
+        copies of vertices (N, 3) and triangles (M, 3) for convex hulls and
+        meshes (a mesh keeps only the vertices its triangles use)."""
+        out = init_struct(s.Shape)
+        lib.opx_linkset_get_shape(self, link, shape, out)
+        vertices = np.ctypeslib.as_array(ctypes.cast(out.vertices, ctypes.POINTER(
+            ctypes.c_double)), (out.vertex_count, 3)).copy() if out.vertex_count else \
+            np.zeros((0, 3))
+        triangles = np.ctypeslib.as_array(ctypes.cast(out.indices, ctypes.POINTER(
+            ctypes.c_uint32)), (out.triangle_count, 3)).copy() if out.triangle_count else \
+            np.zeros((0, 3), dtype=np.uint32)
+        return SimpleNamespace(kind=out.kind, pose=tuple(out.pose.position) +
+                               tuple(out.pose.orientation), radius=out.radius,
+                               length=out.length, size=tuple(out.size), vertices=vertices,
+                               triangles=triangles)
 
     def link_name(self, link):
         name = ctypes.c_char_p()

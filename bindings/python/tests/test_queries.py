@@ -131,6 +131,15 @@ class Shapes(unittest.TestCase):
         strided[:, :3] = tetra
         self.assertEqual(robot.add_convex(tool, strided[:, :3]), 4)
         self.assertEqual(robot.shape_count(tool), 5)
+        capsule = robot.shape(tool, 1)
+        self.assertEqual((capsule.kind, capsule.radius, capsule.length, capsule.pose[2]),
+                         (octoprox.SHAPE_CAPSULE, 0.05, 0.2, 0.1))
+        mesh = robot.shape(tool, 3)
+        # A stored mesh renumbers its vertices: compare the triangles' corners.
+        np.testing.assert_array_equal(mesh.vertices[mesh.triangles], tetra[np.array(faces)])
+        self.assertEqual(len(robot.shape(tool, 2).vertices), 4)
+        with self.assertRaises(ValueError):
+            robot.shape(tool, 5)
         self.assertEqual((robot.find_link("tool"), robot.link_names), (tool, ["tool"]))
         with robot.clone() as copy:
             self.assertEqual(copy.shape_count(tool), 5)

@@ -5,7 +5,7 @@ use std::ptr;
 
 /// The geometry of a shape, in metres, in the shape frame (see
 /// `include/octoprox/linkset.h` for each convention).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ShapeKind<'a> {
     Sphere { radius: f64 },
     /// Full edge lengths along x, y, z.
@@ -22,7 +22,7 @@ pub enum ShapeKind<'a> {
 
 /// A shape and its pose in the link frame.  The library copies vertices
 /// and triangles, so they need only live for the `add_shape` call.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Shape<'a> {
     pub kind: ShapeKind<'a>,
     pub pose: Pose,
@@ -72,6 +72,41 @@ impl<'a> Shape<'a> {
         }
         c
     }
+
+    /// A shape the library describes; the slices borrow its memory.
+    ///
+    /// # Safety
+    /// `c.vertices` must hold `vertex_count` packed points and `c.indices`
+    /// `triangle_count` packed triangles, valid for `'a`.
+    unsafe fn from_c(c: &sys::opx_shape) -> Result<Shape<'a>> {
+        let kind = match c.kind {
+            sys::OPX_SHAPE_SPHERE => ShapeKind::Sphere { radius: c.radius },
+            sys::OPX_SHAPE_BOX => ShapeKind::Box { size: c.size },
+            sys::OPX_SHAPE_CYLINDER => ShapeKind::Cylinder { radius: c.radius, length: c.length },
+            sys::OPX_SHAPE_CAPSULE => ShapeKind::Capsule { radius: c.radius, length: c.length },
+            sys::OPX_SHAPE_CONVEX => ShapeKind::Convex { vertices: slice(c.vertices, c.vertex_count) },
+            sys::OPX_SHAPE_MESH => ShapeKind::Mesh {
+                vertices: slice(c.vertices, c.vertex_count),
+                triangles: slice(c.indices, c.triangle_count),
+            },
+            kind => {
+                return Err(Error::new(sys::OPX_ERROR_UNSUPPORTED,
+                                      format!("LinkSet::shape: unknown shape kind {}", kind)))
+            }
+        };
+        Ok(Shape { kind, pose: c.pose })
+    }
+}
+
+/// `count` packed items of `T` (an array of scalars) at `data`.
+///
+/// # Safety
+/// `data` must be NULL with count 0, or hold `count` items valid for `'a`.
+unsafe fn slice<'a, S, T>(data: *const S, count: usize) -> &'a [T] {
+    if data.is_null() || count == 0 {
+        return &[];
+    }
+    std::slice::from_raw_parts(data.cast::<T>(), count)
 }
 
 /// A robot as a set of links, each with shapes, a padding, an enabled flag
@@ -143,6 +178,19 @@ impl LinkSet {
         // SAFETY: const call.
         check(unsafe { sys::opx_linkset_shape_count(self.raw, link, &mut count) })?;
         Ok(count)
+    }
+
+    /// Shape `shape` of `link` as stored (kind, pose in the link frame,
+    /// sizes); convex and mesh vertices and triangles are borrowed from the
+    /// link set (a mesh keeps only the vertices its triangles use).
+    pub fn shape(&self, link: u32, shape: u32) -> Result<Shape<'_>> {
+        let mut c = sys::opx_shape::default();
+        // SAFETY: const call; the returned arrays stay valid while the set
+        // is unchanged, which the borrow of self guarantees.
+        unsafe {
+            check(sys::opx_linkset_get_shape(self.raw, link, shape, &mut c))?;
+            Shape::from_c(&c)
+        }
     }
 
     /// The link's name (copied).

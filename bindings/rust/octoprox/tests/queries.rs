@@ -94,6 +94,22 @@ fn every_shape_kind_is_accepted() {
         assert_eq!(links.add_shape(tool, &shape).unwrap(), i as u32);
     }
     assert_eq!(links.shape_count(tool).unwrap(), 4);
+    for (i, kind) in kinds.iter().enumerate().take(3) {
+        let stored = links.shape(tool, i as u32).unwrap();
+        assert_eq!(stored.kind, *kind);
+        assert_eq!(stored.pose, pose_at(0.0, 0.0, 0.01 * i as f64));
+    }
+    // A stored mesh renumbers its vertices: compare the triangles' corners.
+    let corners = |vertices: &[[f64; 3]], triangles: &[[u32; 3]]| -> Vec<[[f64; 3]; 3]> {
+        triangles.iter().map(|t| t.map(|v| vertices[v as usize])).collect()
+    };
+    match links.shape(tool, 3).unwrap().kind {
+        ShapeKind::Mesh { vertices, triangles } => {
+            assert_eq!(corners(vertices, triangles), corners(&tetra, &faces))
+        }
+        other => panic!("a mesh was stored as {:?}", other),
+    }
+    assert!(links.shape(tool, 4).is_err());
     assert_eq!(links.find_link("tool").unwrap(), tool);
     assert_eq!(links.link_name(tool).unwrap(), "tool");
     let copy = links.try_clone().unwrap();
