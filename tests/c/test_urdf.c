@@ -337,6 +337,23 @@ static void mimic_chains_compose_and_planar_floating_stay_put(void **state) {
     opx_linkset_destroy(robot);
 }
 
+/* One link and no joint: FK has no values but still places the root. */
+static void a_single_link_robot_follows_its_base_pose(void **state) {
+    (void)state;
+    opx_linkset *robot = NULL;
+    assert_ok(opx_linkset_load_urdf_string("<robot name=\"r\"><link name=\"only\"><collision><geometry>"
+                                           "<sphere radius=\"0.1\"/></geometry></collision></link></robot>",
+                                           NULL, &robot));
+    uint32_t joints = 99;
+    assert_ok(opx_linkset_joint_count(robot, &joints));
+    assert_int_equal(joints, 0);
+    const opx_pose base = pose_at(1.0, -2.0, 0.5);
+    assert_ok(opx_linkset_set_joint_positions(robot, NULL, 0, &base));
+    const opx_pose pose = get_pose(robot, 0);
+    assert_memory_equal(&pose, &base, sizeof pose);
+    opx_linkset_destroy(robot);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(links_shapes_and_joints_come_from_the_file),
@@ -349,6 +366,7 @@ int main(void) {
         cmocka_unit_test(clone_copies_the_joint_tree),
         cmocka_unit_test(a_link_added_later_keeps_its_pose),
         cmocka_unit_test(mimic_chains_compose_and_planar_floating_stay_put),
+        cmocka_unit_test(a_single_link_robot_follows_its_base_pose),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

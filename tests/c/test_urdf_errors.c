@@ -121,7 +121,8 @@ static void missing_files_and_packages_are_io_errors(void **state) {
                         OPX_ERROR_IO, "link 'a' collision 0: mesh 'nope/m.stl'");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"><collision><geometry>"
                         "<mesh filename=\"package://ghost/m.stl\"/></geometry></collision></link></robot>",
-                        OPX_ERROR_IO, "package 'ghost' is unknown");
+                        OPX_ERROR_IO, "package 'ghost' is unknown (options->package_dirs is empty; a package "
+                                      "folder named otherwise is mapped by an entry 'ghost=DIR')");
     const char *dirs[1] = {"/tmp"};
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
     options.package_dirs = dirs;
