@@ -156,8 +156,8 @@ extern "C" { pub fn opx_linkset_add_link (links : * mut opx_linkset , name : * c
 extern "C" { pub fn opx_linkset_add_shape (links : * mut opx_linkset , link : u32 , shape : * const opx_shape , out_shape : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_link_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_shape_count (links : * const opx_linkset , link : u32 , out_count : * mut u32) -> opx_status ; }
-extern "C" { pub fn opx_linkset_get_shape (links : * const opx_linkset , link : u32 , shape : u32 , out_shape : * mut opx_shape) -> opx_status ; }
 extern "C" { pub fn opx_linkset_link_name (links : * const opx_linkset , link : u32 , out_name : * mut * const :: std :: os :: raw :: c_char) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_shape (links : * const opx_linkset , link : u32 , shape : u32 , out_shape : * mut opx_shape) -> opx_status ; }
 extern "C" { pub fn opx_linkset_find_link (links : * const opx_linkset , name : * const :: std :: os :: raw :: c_char , out_link : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_padding (links : * mut opx_linkset , padding : f64) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_link_padding (links : * mut opx_linkset , link : u32 , padding : f64) -> opx_status ; }
