@@ -1,0 +1,68 @@
+"""OctoProx: collision and distance queries between robot links and
+occupancy octrees built from point-cloud sensor frames (ctypes bindings of
+liboctoprox; see the README and include/octoprox/ for the semantics).
+
+    import octoprox
+    with octoprox.Octree(resolution=0.05) as tree, octoprox.LinkSet() as robot:
+        ...
+        hit = octoprox.Query().collide(tree, robot)
+
+Units are metres and radians; poses are x y z qx qy qz qw (ROS order).
+The library is found through $OPX_LIBRARY, next to this package, or on the
+system's library path.
+"""
+from ._errors import (BufferTooSmallError, CorruptDataError, InternalError,
+                      InvalidArgumentError, IoError, OctoproxError, OutOfMemoryError,
+                      UnsupportedError, VersionError)
+from ._library import HEADER_VERSION, lib
+from ._structs import (CellInfo, CollisionRequest, CollisionResult, Contact, CostBox,
+                       DistanceRequest, DistanceResult, InsertOptions, InsertReport,
+                       JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest, PathResult,
+                       Pose, QueryOptions, QueryStats, UrdfOptions)
+from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
+                      SHAPE_SPHERE, LinkSet)
+from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
+                     MASK_OCCUPIED, MASK_UNCERTAIN, Octree)
+from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, JOINT_PLANAR,
+                    JOINT_PRISMATIC, JOINT_REVOLUTE)
+from .query import ENGINE_AMORTIZED, ENGINE_DIRECT, UNKNOWN_FREE, UNKNOWN_OCCUPIED, Query
+
+CELL_UNKNOWN, CELL_FREE, CELL_UNCERTAIN, CELL_OCCUPIED = 0, 1, 2, 3
+INSERT_RAYCAST, INSERT_ENDPOINTS = 0, 1
+
+
+def version():
+    """The run-time library version, e.g. "0.1.0"."""
+    return lib.opx_version().decode()
+
+
+def version_number():
+    """The run-time OPX_VERSION_NUMBER (major * 10000 + minor * 100 + patch)."""
+    return lib.opx_version_number()
+
+
+def status_name(status):
+    """The name of a status code, e.g. "OPX_ERROR_IO"."""
+    return lib.opx_status_name(status).decode()
+
+
+__version__ = "%d.%d.%d" % HEADER_VERSION
+
+__all__ = [
+    "Octree", "LinkSet", "Query", "version", "version_number", "status_name", "HEADER_VERSION", "lib",
+    # results, requests and options (the C structs)
+    "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox", "DistanceRequest",
+    "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
+    "OctreeStats", "PathRequest", "PathResult", "Pose", "QueryOptions", "QueryStats",
+    "UrdfOptions",
+    # exceptions
+    "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
+    "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",
+    # constants
+    "CELL_UNKNOWN", "CELL_FREE", "CELL_UNCERTAIN", "CELL_OCCUPIED", "INSERT_RAYCAST",
+    "INSERT_ENDPOINTS", "MASK_FREE", "MASK_UNCERTAIN", "MASK_OCCUPIED", "MASK_ALL_KNOWN",
+    "FORMAT_AUTO", "FORMAT_BT", "FORMAT_OT", "ENGINE_DIRECT", "ENGINE_AMORTIZED",
+    "UNKNOWN_FREE", "UNKNOWN_OCCUPIED", "JOINT_FIXED", "JOINT_REVOLUTE", "JOINT_CONTINUOUS",
+    "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE", "SHAPE_SPHERE",
+    "SHAPE_BOX", "SHAPE_CYLINDER", "SHAPE_CAPSULE", "SHAPE_CONVEX", "SHAPE_MESH",
+]

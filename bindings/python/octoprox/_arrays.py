@@ -1,0 +1,137 @@
+"""numpy arrays in and out, by address and stride.
+
+Points go to the library without a copy when they are
+  * a 2-D float32 or float64 array of shape (N, >=3) whose rows may be
+    strided (a view of a bigger array) but whose x, y, z are adjacent, or
+  * a 1-D structured array with float32 or float64 fields x, y, z at
+    consecutive offsets (a ROS PointCloud2 buffer viewed with its
+    point_step as itemsize: ``np.frombuffer(msg.data, dtype)``).
+Anything else (lists, other dtypes, byte-swapped or column-strided arrays)
+is converted once to a packed float64 (N, 3) array: the one documented copy.
+"""
+import numpy as np
+
+from . import _structs as s
+from ._errors import ERROR_INVALID_ARGUMENT, error_for
+
+SCALAR_FLOAT32 = 1
+SCALAR_FLOAT64 = 2
+_SCALARS = {np.dtype(np.float32): SCALAR_FLOAT32, np.dtype(np.float64): SCALAR_FLOAT64}
+
+# Result rows as numpy structured arrays, laid out exactly as the C structs.
+CONTACT_DTYPE = np.dtype(s.Contact)
+COST_BOX_DTYPE = np.dtype(s.CostBox)
+LEAF_DTYPE = np.dtype(s.Leaf)
+POSE_SIZE = 7 * 8
+
+
+def invalid(message):
+    return error_for(ERROR_INVALID_ARGUMENT, message)
+
+
+class PointView:
+    """What the library is handed: address, count, stride (bytes), scalar
+    type; ``owner`` keeps the memory alive for the call."""
+
+    def __init__(self, address, count, stride, scalar_type, owner):
+        self.address, self.count, self.stride = address, count, stride
+        self.scalar_type, self.owner = scalar_type, owner
+
+
+def point_view(points, where):
+    """The points as the library reads them, copying only when unavoidable."""
+    if isinstance(points, np.ndarray):
+        view = _direct_matrix(points) if points.dtype.names is None else _direct_fields(points)
+        if view is not None:
+            return view
+    packed = _packed_xyz(points, where)
+    return PointView(packed.ctypes.data, len(packed), packed.strides[0], SCALAR_FLOAT64, packed)
+
+
+def _direct_matrix(arr):
+    scalar = _SCALARS.get(arr.dtype) if arr.dtype.isnative else None
+    if scalar is None or arr.ndim != 2 or arr.shape[1] < 3 or arr.strides[1] != arr.itemsize:
+        return None
+    stride = arr.strides[0]
+    if len(arr) > 1 and stride < 3 * arr.itemsize:
+        return None  # negative, zero (broadcast) or overlapping rows
+    stride = stride if len(arr) > 1 else 3 * arr.itemsize
+    return PointView(arr.ctypes.data, len(arr), stride, scalar, arr)
+
+
+def _direct_fields(arr):
+    fields = arr.dtype.fields
+    if arr.ndim != 1 or not all(name in fields for name in "xyz"):
+        return None
+    (tx, ox), (ty, oy), (tz, oz) = (fields[name][:2] for name in "xyz")
+    scalar = _SCALARS.get(tx) if tx.isnative else None
+    if scalar is None or not tx == ty == tz or (oy, oz) != (ox + tx.itemsize, ox + 2 * tx.itemsize):
+        return None
+    stride = arr.strides[0] if len(arr) > 1 else arr.itemsize
+    if stride < 3 * tx.itemsize:
+        return None
+    return PointView(arr.ctypes.data + ox, len(arr), stride, scalar, arr)
+
+
+def _packed_xyz(points, where):
+    if isinstance(points, np.ndarray) and points.dtype.names is not None:
+        if not all(name in points.dtype.names for name in "xyz"):
+            raise invalid(f"{where}: a structured array needs fields x, y and z")
+        points = np.stack([points["x"], points["y"], points["z"]], axis=-1)
+    try:
+        packed = np.ascontiguousarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as error:
+        raise invalid(f"{where}: points are not numbers ({error})") from error
+    if packed.ndim != 2 or packed.shape[1] < 3:
+        raise invalid(f"{where}: points must have shape (N, 3) or more columns, "
+                      f"got {packed.shape}")
+    return np.ascontiguousarray(packed[:, :3])
+
+
+def pose_array(poses, where, ndim):
+    """Poses as a float64 array of shape (..., 7) with ndim dimensions (7
+    doubles are one opx_pose, so rows go in by address and stride).  Rows
+    of 3 numbers get the identity orientation (a copy)."""
+    arr = poses if isinstance(poses, np.ndarray) else np.asarray(poses, dtype=np.float64)
+    if arr.ndim != ndim or arr.shape[-1] not in (3, 7):
+        raise invalid(f"{where}: poses must have {ndim} dimensions, the last of 7 "
+                      f"(x y z qx qy qz qw) or 3 numbers; got shape {arr.shape}")
+    if arr.shape[-1] == 3:
+        identity = np.zeros(arr.shape[:-1] + (4,))
+        identity[..., 3] = 1.0
+        arr = np.concatenate([np.asarray(arr, dtype=np.float64), identity], axis=-1)
+    if arr.dtype != np.float64 or not arr.dtype.isnative or arr.strides[-1] != 8 or \
+            any(st < POSE_SIZE for st, n in zip(arr.strides[:-1], arr.shape[:-1]) if n > 1):
+        arr = np.ascontiguousarray(arr, dtype=np.float64)
+    return arr
+
+
+def pose_strides(arr):
+    """The byte strides of the leading dimensions; a dimension of length 1
+    gets the packed stride (numpy may give it any stride, even 0)."""
+    strides, packed = [], POSE_SIZE
+    for n, st in reversed(list(zip(arr.shape[:-1], arr.strides[:-1]))):
+        strides.insert(0, st if n > 1 else packed)
+        packed *= n
+    return strides
+
+
+def vertex_array(vertices, where):
+    """(N, 3) float64 vertices by address and row stride (else one copy)."""
+    arr = vertices if isinstance(vertices, np.ndarray) else np.asarray(vertices, np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise invalid(f"{where}: vertices must have shape (N, 3), got {arr.shape}")
+    if arr.dtype != np.float64 or not arr.dtype.isnative or arr.strides[1] != 8 or \
+            (len(arr) > 1 and arr.strides[0] < 24):
+        arr = np.ascontiguousarray(arr, dtype=np.float64)
+    return arr
+
+
+def triangle_array(triangles, where):
+    """(M, 3) packed uint32 vertex indices (a copy unless already so)."""
+    arr = np.asarray(triangles)
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise invalid(f"{where}: triangles must have shape (M, 3), got {arr.shape}")
+    if arr.size and (arr.min() < 0 or arr.max() > 0xFFFFFFFF):
+        raise invalid(f"{where}: a triangle index is out of the uint32 range")
+    return np.ascontiguousarray(arr, dtype=np.uint32)

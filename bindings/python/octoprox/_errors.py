@@ -1,0 +1,82 @@
+"""Exceptions raised for the library's status codes.
+
+Every exception carries ``status`` (the negative ``opx_status``) and
+``message`` (the library's text, naming the function and the argument).
+Where a builtin exception fits, the class also derives from it, so
+``except ValueError`` catches invalid arguments and corrupt data,
+``except MemoryError`` out-of-memory and ``except OSError`` I/O errors.
+"""
+
+OK = 0
+ERROR_INVALID_ARGUMENT = -1
+ERROR_OUT_OF_MEMORY = -2
+ERROR_VERSION = -3
+ERROR_BUFFER_TOO_SMALL = -4
+ERROR_UNSUPPORTED = -5
+ERROR_IO = -6
+ERROR_CORRUPT = -7
+ERROR_INTERNAL = -8
+
+
+class OctoproxError(Exception):
+    """A failed call: ``status`` and ``message``."""
+
+    def __init__(self, status, message):
+        # Only the message goes to the base classes: OSError would take two
+        # arguments as errno and strerror.
+        super().__init__(message)
+        self.status = status
+        self.message = message
+
+    def __str__(self):
+        return self.message
+
+
+class InvalidArgumentError(OctoproxError, ValueError):
+    """NULL, NaN, out of range, bad stride... (OPX_ERROR_INVALID_ARGUMENT)."""
+
+
+class OutOfMemoryError(OctoproxError, MemoryError):
+    """OPX_ERROR_OUT_OF_MEMORY."""
+
+
+class VersionError(OctoproxError):
+    """A struct_size the library does not know, or an incompatible library."""
+
+
+class BufferTooSmallError(OctoproxError):
+    """OPX_ERROR_BUFFER_TOO_SMALL (the bindings size their buffers, so this
+    only reaches callers on a bug)."""
+
+
+class UnsupportedError(OctoproxError, NotImplementedError):
+    """A valid request the library does not handle (OPX_ERROR_UNSUPPORTED)."""
+
+
+class IoError(OctoproxError, OSError):
+    """A file could not be read or written (OPX_ERROR_IO)."""
+
+
+class CorruptDataError(OctoproxError, ValueError):
+    """Malformed or truncated input data (OPX_ERROR_CORRUPT)."""
+
+
+class InternalError(OctoproxError, RuntimeError):
+    """A bug in the library (OPX_ERROR_INTERNAL): please report it."""
+
+
+_BY_STATUS = {
+    ERROR_INVALID_ARGUMENT: InvalidArgumentError,
+    ERROR_OUT_OF_MEMORY: OutOfMemoryError,
+    ERROR_VERSION: VersionError,
+    ERROR_BUFFER_TOO_SMALL: BufferTooSmallError,
+    ERROR_UNSUPPORTED: UnsupportedError,
+    ERROR_IO: IoError,
+    ERROR_CORRUPT: CorruptDataError,
+    ERROR_INTERNAL: InternalError,
+}
+
+
+def error_for(status, message):
+    """The exception for a status code (OctoproxError for unknown codes)."""
+    return _BY_STATUS.get(status, OctoproxError)(status, message)

@@ -1,0 +1,113 @@
+"""Query contexts (opx_query): collision, distance and path queries."""
+import ctypes
+
+import numpy as np
+
+from . import _structs as s
+from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, invalid, pose_array, pose_strides
+from ._errors import BufferTooSmallError
+from ._handle import Handle
+from ._library import init_struct, lib
+from .linkset import LinkSet
+from .octree import Octree
+
+ENGINE_DIRECT, ENGINE_AMORTIZED = 1, 2
+UNKNOWN_FREE, UNKNOWN_OCCUPIED = 0, 1
+_ENGINES = {"direct": ENGINE_DIRECT, "amortized": ENGINE_AMORTIZED}
+
+
+def _check_operands(tree, links, where):
+    # The C handles are untyped pointers to ctypes: a swapped argument would
+    # reach the library as the wrong object, so check the Python types here.
+    if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
+        raise TypeError(f"{where}: expected an Octree and a LinkSet, got "
+                        f"{type(tree).__name__} and {type(links).__name__}")
+
+
+class Query(Handle):
+    """A query context: use one per thread.  ``Query(engine="amortized")``
+    or any field of opx_query_options as a keyword.
+
+    Request fields are keywords of collide/distance/path, e.g.
+    ``query.collide(tree, robot, unknown_policy=UNKNOWN_OCCUPIED,
+    max_contacts=10)``; results are the C result structs.
+    """
+    _destroy = "opx_query_destroy"
+
+    def __init__(self, engine=ENGINE_DIRECT, **options):
+        engine = _ENGINES.get(engine, engine)
+        opts = init_struct(s.QueryOptions, engine=engine, **options)
+        super().__init__(lambda out: lib.opx_query_create(opts, out))
+        self._contact_count = self._cost_box_count = 0
+
+    @property
+    def stats(self):
+        out = init_struct(s.QueryStats)
+        lib.opx_query_get_stats(self, out)
+        return out
+
+    def collide(self, tree, links, **request):
+        """Does the link set collide with the octree?  Read the contacts and
+        cost boxes with contacts() and cost_boxes()."""
+        _check_operands(tree, links, "Query.collide")
+        req = init_struct(s.CollisionRequest, **request)
+        out = init_struct(s.CollisionResult)
+        self._contact_count = self._cost_box_count = 0
+        lib.opx_query_collide(self, tree, links, req, out)
+        self._contact_count, self._cost_box_count = out.contact_count, out.cost_box_count
+        return out
+
+    def contacts(self):
+        """The contacts of the last collision query, a structured array with
+        the fields of opx_contact (link, shape, cell_class, cell_center, ...)."""
+        return self._rows(lib.opx_query_get_contact, CONTACT_DTYPE, self._contact_count)
+
+    def cost_boxes(self):
+        """The cost boxes of the last collision or path query, costliest
+        first, a structured array with the fields of opx_cost_box."""
+        return self._rows(lib.opx_query_get_cost_box, COST_BOX_DTYPE, self._cost_box_count)
+
+    def _rows(self, get, dtype, count):
+        # Each row is written by the library straight into the array.
+        rows = np.zeros(count, dtype=dtype)
+        rows["struct_size"] = dtype.itemsize
+        for i in range(count):
+            get(self, i, rows.ctypes.data + i * dtype.itemsize)
+        return rows
+
+    def distance(self, tree, links, **request):
+        """The minimum distance between the enabled links and the obstacles;
+        with per_link=True, link_distances() gives each link's."""
+        _check_operands(tree, links, "Query.distance")
+        req = init_struct(s.DistanceRequest, **request)
+        out = init_struct(s.DistanceResult)
+        lib.opx_query_distance(self, tree, links, req, out)
+        return out
+
+    def link_distances(self):
+        """Each link's minimum distance from the last distance query."""
+        count = ctypes.c_size_t()
+        try:
+            lib.opx_query_get_link_distances(self, None, 0, ctypes.byref(count))
+        except BufferTooSmallError:
+            pass
+        out = np.zeros(count.value)
+        lib.opx_query_get_link_distances(self, out.ctypes.data, len(out), ctypes.byref(count))
+        return out[:count.value]
+
+    def path(self, tree, links, poses, **request):
+        """Checks a path: poses of shape (waypoints, links, 7) (or 3:
+        positions), map frame; a float64 array is read in place by stride."""
+        _check_operands(tree, links, "Query.path")
+        arr = pose_array(poses, "Query.path", 3)
+        if arr.shape[1] != links.link_count:
+            raise invalid(f"Query.path: poses have {arr.shape[1]} links per waypoint, the "
+                          f"link set has {links.link_count}")
+        waypoint_stride, pose_stride = pose_strides(arr)
+        req = init_struct(s.PathRequest, **request)
+        out = init_struct(s.PathResult)
+        self._contact_count = self._cost_box_count = 0
+        lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0], pose_stride,
+                           waypoint_stride, req, out)
+        self._cost_box_count = out.cost_box_count
+        return out

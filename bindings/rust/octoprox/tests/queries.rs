@@ -1,0 +1,173 @@
+//! Collision, distance, cost and path queries on the scenes of the C tests
+//! (tests/c/test_query_collide.c, _distance.c, _cost.c, _path.c).
+mod common;
+use common::*;
+use octoprox::consts::*;
+use octoprox::{pose_at, CollisionRequest, DistanceRequest, LinkSet, PathRequest, Query,
+               QueryOptions, Shape, ShapeKind};
+
+fn new_query() -> Query {
+    Query::new(&QueryOptions::default()).unwrap()
+}
+
+#[test]
+fn a_touching_sphere_collides_and_reports_the_cell() {
+    let tree = one_cell_map();
+    // Sphere r 0.1 at x = 0.35: it touches the cell face x = 0.25.
+    let links = sphere_at(0.1, 0.35, C0, C0);
+    let mut query = new_query();
+    let result = query.collide(&tree, &links, &CollisionRequest::default()).unwrap();
+    assert_eq!((result.collided, result.contact_count), (1, 1));
+    let contacts = query.contacts().unwrap();
+    assert_eq!(contacts.len(), 1);
+    assert_eq!((contacts[0].link, contacts[0].shape), (0, 0));
+    assert_eq!(contacts[0].cell_center, [C0, C0, C0]);
+    assert_eq!(contacts[0].cell_class, OPX_CELL_OCCUPIED);
+    let apart = sphere_at(0.1, 0.5, C0, C0);
+    assert_eq!(query.collide(&tree, &apart, &CollisionRequest::default()).unwrap().collided, 0);
+    assert!(query.contacts().unwrap().is_empty());
+}
+
+#[test]
+fn unknown_space_is_an_obstacle_when_asked() {
+    let tree = one_cell_map();
+    let links = sphere_at(0.1, 2.0, 2.0, 2.0);
+    let mut query = new_query();
+    let request = CollisionRequest { unknown_policy: OPX_UNKNOWN_OCCUPIED, ..Default::default() };
+    let result = query.collide(&tree, &links, &request).unwrap();
+    assert_eq!(result.collided, 1);
+    assert_eq!(query.contact(0).unwrap().cell_class, OPX_CELL_UNKNOWN);
+}
+
+#[test]
+fn padding_and_penetration() {
+    let tree = one_cell_map();
+    let mut links = sphere_at(0.1, 0.4, C0, C0); // 0.05 m from the cell
+    let mut query = new_query();
+    let request = CollisionRequest { compute_penetration: 1, ..Default::default() };
+    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 0);
+    links.set_padding(0.08).unwrap();
+    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 1);
+    let contact = query.contact(0).unwrap();
+    assert!((contact.depth - 0.03).abs() < 1e-6, "depth {}", contact.depth);
+    assert!((contact.normal[0] + 1.0).abs() < 1e-6, "normal {:?}", contact.normal);
+}
+
+#[test]
+fn distance_with_witnesses_and_per_link() {
+    let tree = one_cell_map();
+    let mut links = LinkSet::new().unwrap();
+    let above = links.add_link("above").unwrap();
+    let beside = links.add_link("beside").unwrap();
+    links.add_shape(above, &Shape::sphere(0.1)).unwrap();
+    links.add_shape(beside, &Shape::cuboid([0.1, 0.1, 0.1])).unwrap();
+    links.set_poses(&[pose_at(C0, C0, 1.0), pose_at(C0, 1.0, C0)]).unwrap();
+    let mut query = new_query();
+    let request = DistanceRequest { per_link: 1, ..Default::default() };
+    let result = query.distance(&tree, &links, &request).unwrap();
+    assert_eq!((result.found, result.collided, result.link), (1, 0, above));
+    assert!((result.distance - 0.65).abs() < 1e-9);
+    assert!((result.point_on_cell[2] - 0.25).abs() < 1e-9);
+    let per_link = query.link_distances().unwrap();
+    assert_eq!(per_link.len(), 2);
+    assert!((per_link[1] - 0.7).abs() < 1e-9);
+    links.set_link_enabled(above, false).unwrap();
+    let result = query.distance(&tree, &links, &DistanceRequest::default()).unwrap();
+    assert_eq!(result.link, beside);
+    assert!(query.link_distances().unwrap().is_empty());
+}
+
+#[test]
+fn every_shape_kind_is_accepted() {
+    let tetra = [[0.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.0, 0.1, 0.0], [0.0, 0.0, 0.1]];
+    let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    let kinds = [
+        ShapeKind::Cylinder { radius: 0.05, length: 0.2 },
+        ShapeKind::Capsule { radius: 0.05, length: 0.2 },
+        ShapeKind::Convex { vertices: &tetra },
+        ShapeKind::Mesh { vertices: &tetra, triangles: &faces },
+    ];
+    let mut links = LinkSet::new().unwrap();
+    let tool = links.add_link("tool").unwrap();
+    for (i, kind) in kinds.iter().enumerate() {
+        let shape = Shape::new(*kind).at(pose_at(0.0, 0.0, 0.01 * i as f64));
+        assert_eq!(links.add_shape(tool, &shape).unwrap(), i as u32);
+    }
+    assert_eq!(links.shape_count(tool).unwrap(), 4);
+    for (i, kind) in kinds.iter().enumerate().take(3) {
+        let stored = links.shape(tool, i as u32).unwrap();
+        assert_eq!(stored.kind, *kind);
+        assert_eq!(stored.pose, pose_at(0.0, 0.0, 0.01 * i as f64));
+    }
+    // A stored mesh renumbers its vertices: compare the triangles' corners.
+    let corners = |vertices: &[[f64; 3]], triangles: &[[u32; 3]]| -> Vec<[[f64; 3]; 3]> {
+        triangles.iter().map(|t| t.map(|v| vertices[v as usize])).collect()
+    };
+    match links.shape(tool, 3).unwrap().kind {
+        ShapeKind::Mesh { vertices, triangles } => {
+            assert_eq!(corners(vertices, triangles), corners(&tetra, &faces))
+        }
+        other => panic!("a mesh was stored as {:?}", other),
+    }
+    assert!(links.shape(tool, 4).is_err());
+    assert_eq!(links.find_link("tool").unwrap(), tool);
+    assert_eq!(links.link_name(tool).unwrap(), "tool");
+    let copy = links.try_clone().unwrap();
+    assert_eq!(copy.shape_count(tool).unwrap(), 4);
+}
+
+/// tests/c/test_query_cost.c: a bar through free cells, an occupied cell
+/// and unknown space behind it; the two unknown boxes, costliest first.
+#[test]
+fn cost_of_unknown_space_behind_an_obstacle() {
+    let mut tree = new_tree(RES);
+    tree.insert_points(&[[1.0f64, 0.0, 0.0]], &sensor_at(C0, C0, C0, OPX_INSERT_RAYCAST))
+        .unwrap();
+    let mut links = LinkSet::new().unwrap();
+    let bar = links.add_link("bar").unwrap();
+    links.add_shape(bar, &Shape::cuboid([1.325, 0.15, 0.15])).unwrap();
+    links.set_poses(&[pose_at(1.2125, C0, C0)]).unwrap();
+    let request = CollisionRequest {
+        compute_cost: 1,
+        region_max: [2.0, RES, RES],
+        ..Default::default()
+    };
+    let mut query = new_query();
+    let result = query.collide(&tree, &links, &request).unwrap();
+    let (small, large) = (0.5 * 0.25 * 0.0225, 0.5 * 0.375 * 0.0225);
+    assert_eq!((result.collided, result.cost_box_count, result.cost_boxes_found), (1, 2, 2));
+    assert!((result.total_cost - (small + large)).abs() < 1e-9);
+    let boxes = query.cost_boxes().unwrap();
+    assert_eq!(boxes[0].cell_class, OPX_CELL_UNKNOWN);
+    assert!((boxes[0].cost - large).abs() < 1e-9);
+    assert!((boxes[1].cost - small).abs() < 1e-9);
+    assert!((boxes[0].max[0] - 1.875).abs() < 1e-9);
+}
+
+#[test]
+fn a_path_reports_its_first_colliding_waypoint() {
+    let tree = one_cell_map();
+    let links = sphere_at(0.1, 2.0, C0, C0);
+    // The sphere moves in along x: 1.0, 0.6, 0.3 (touching), 0.2.
+    let poses: Vec<_> = [1.0, 0.6, 0.3, 0.2].iter().map(|&x| pose_at(x, C0, C0)).collect();
+    let mut query = new_query();
+    let request = PathRequest { compute_distance: 1, ..Default::default() };
+    let result = query.path(&tree, &links, &poses, &request).unwrap();
+    assert_eq!((result.collided, result.first_colliding_waypoint), (1, 2));
+    assert_eq!(result.min_distance_waypoint, 2);
+    assert_eq!(links.pose(0).unwrap().position[0], 2.0); // not moved
+    let free = query.path(&tree, &links, &poses[..2], &PathRequest::default()).unwrap();
+    assert_eq!((free.collided, free.first_colliding_waypoint), (0, -1));
+}
+
+#[test]
+fn the_amortized_engine_gives_the_direct_answers() {
+    let tree = one_cell_map();
+    let links = sphere_at(0.1, C0, C0, 1.0);
+    let options = QueryOptions { engine: OPX_ENGINE_AMORTIZED, ..Default::default() };
+    let mut amortized = Query::new(&options).unwrap();
+    let result = amortized.distance(&tree, &links, &DistanceRequest::default()).unwrap();
+    assert!((result.distance - 0.65).abs() < 1e-9);
+    let stats = amortized.stats().unwrap();
+    assert_eq!((stats.engine, stats.builds, stats.boxes), (OPX_ENGINE_AMORTIZED, 1, 1));
+}
