@@ -5,6 +5,7 @@
 #include "common.h"
 #include "octree.h"
 #include "linkset.h"
+#include "robot.h"
 #include "query.h"
 
 #endif /* OCTOPROX_OCTOPROX_H */

@@ -17,11 +17,15 @@ int opx_init_macros_compile(void) {
     const opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
     const opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     const opx_contact contact = OPX_CONTACT_INIT;
+    const opx_urdf_options urdf_options = OPX_URDF_OPTIONS_INIT;
+    const opx_joint_info joint_info = OPX_JOINT_INFO_INIT;
     return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
            insert_options.struct_size == sizeof insert_options &&
            report.struct_size == sizeof report && cell.struct_size == sizeof cell &&
            stats.struct_size == sizeof stats && shape.struct_size == sizeof shape &&
            query_options.struct_size == sizeof query_options &&
            request.struct_size == sizeof request && result.struct_size == sizeof result &&
-           contact.struct_size == sizeof contact;
+           contact.struct_size == sizeof contact &&
+           urdf_options.struct_size == sizeof urdf_options &&
+           joint_info.struct_size == sizeof joint_info;
 }

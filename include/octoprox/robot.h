@@ -1,0 +1,165 @@
+/*
+ * Robot models from URDF: a link set built from a URDF file or string, its
+ * joint tree, and forward kinematics (FK) that sets every link pose at once.
+ *
+ * Frames:
+ *   - A link's frame is the URDF link frame: opx_linkset_get_pose gives it
+ *     in the MAP frame, and every shape pose (opx_shape.pose) is in it.
+ *   - base_pose (FK calls) is the pose of the URDF ROOT link (the one no
+ *     joint has as child) in the map frame; NULL means identity.
+ *   - A joint's origin is the child link frame in the parent link frame at
+ *     joint position 0; the joint axis is in the child link frame (URDF).
+ * Units: metres and radians (joint positions: radians for revolute and
+ * continuous joints, metres for prismatic joints).
+ *
+ * What becomes what:
+ *   - Every URDF <link> becomes one link of the set, with the same name, in
+ *     the order the links appear in the file; links without <collision>
+ *     have no shapes but still get a pose from FK.
+ *   - Every <collision> element becomes one shape of its link, its <origin>
+ *     giving the shape pose in the link frame: <box size> (full edge
+ *     lengths), <sphere radius>, <cylinder radius length> (full length
+ *     along z, as OPX_SHAPE_CYLINDER), <mesh filename scale> (OPX_SHAPE_MESH).
+ *     <visual> elements are ignored (their files need not exist).
+ *   - Meshes are read with assimp (STL, DAE, OBJ and the other formats it
+ *     knows): all meshes of a file are merged into one triangle mesh with
+ *     the file's node transforms applied (so a DAE's unit and up axis are
+ *     honoured as assimp applies them), then the URDF scale.  A mesh is a
+ *     SURFACE (see linkset.h): a cell wholly inside a closed mesh touches no
+ *     triangle.
+ *   - Geometry urdfdom does not know (e.g. <capsule>) makes the whole URDF
+ *     invalid: the load fails with OPX_ERROR_CORRUPT.  A box, sphere or
+ *     cylinder with a size <= 0 or a mesh with a zero scale likewise.
+ *
+ * Mesh file names:
+ *   - "package://NAME/rest": for each entry DIR of package_dirs in order,
+ *     DIR/NAME/rest, then DIR/rest when the last component of DIR is NAME.
+ *     An entry "NAME=DIR" maps package NAME to DIR explicitly (DIR/rest),
+ *     e.g. "moveit_resources_pr2_description=/data/robots/pr2_description".
+ *     The first existing file wins; none: OPX_ERROR_IO naming the URI.
+ *   - "file:///abs/path" and absolute paths as they are.
+ *   - Relative paths (and "file://rel"): relative to base_dir.
+ *
+ * Joints keep the URDF file's order (fixed joints included); that is the
+ * "model order" of opx_linkset_set_joint_positions.  Joint limits are
+ * reported, not enforced.  A link set made by opx_linkset_create has no
+ * joints: the FK calls on it fail with OPX_ERROR_UNSUPPORTED.
+ */
+#ifndef OCTOPROX_ROBOT_H
+#define OCTOPROX_ROBOT_H
+
+#include "common.h"
+#include "linkset.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct opx_urdf_options {
+    uint32_t struct_size;
+    uint32_t reserved0;              /* padding; keep 0 */
+    /* Directories that resolve package:// URIs (see above); the strings
+     * are read during the call only. */
+    const char *const *package_dirs;
+    size_t package_dir_count;
+    /* Base of relative mesh paths.  NULL: the URDF file's folder
+     * (opx_linkset_load_urdf_file) or the current directory (_string). */
+    const char *base_dir;
+    /* Optional SRDF file: its <disable_collisions link1 link2> pairs are
+     * read (and only those), see opx_linkset_disabled_pair.  NULL: none. */
+    const char *srdf_path;
+} opx_urdf_options;
+
+#define OPX_URDF_OPTIONS_INIT {sizeof(opx_urdf_options), 0, NULL, 0, NULL, NULL}
+OPX_API opx_status opx_urdf_options_init(opx_urdf_options *options, size_t size);
+
+/*
+ * A new link set from a URDF file or an XML string (options NULL:
+ * defaults).  All link poses start at FK with every joint at 0 and the
+ * root link at the map origin.  Errors: OPX_ERROR_IO (file or mesh cannot
+ * be read, unknown package), OPX_ERROR_CORRUPT (malformed XML or URDF, bad
+ * geometry, a mesh without triangles, a bad SRDF), OPX_ERROR_INVALID_ARGUMENT
+ * (NULLs); *out is NULL on failure.
+ */
+OPX_API opx_status opx_linkset_load_urdf_file(const char *path, const opx_urdf_options *options,
+                                              opx_linkset **out);
+OPX_API opx_status opx_linkset_load_urdf_string(const char *xml, const opx_urdf_options *options,
+                                                opx_linkset **out);
+
+/* Joint types.  FLOATING and PLANAR joints are not moved by FK: they stay
+ * at their origin (as if fixed) and their positions are ignored. */
+#define OPX_JOINT_FIXED 0
+#define OPX_JOINT_REVOLUTE 1
+#define OPX_JOINT_CONTINUOUS 2
+#define OPX_JOINT_PRISMATIC 3
+#define OPX_JOINT_FLOATING 4
+#define OPX_JOINT_PLANAR 5
+
+/* No mimic joint / no link. */
+#define OPX_JOINT_NONE UINT32_MAX
+
+typedef struct opx_joint_info {
+    uint32_t struct_size;
+    int32_t type;                /* OPX_JOINT_* */
+    const char *name;            /* valid while the link set lives */
+    uint32_t parent_link;        /* link indices in the set */
+    uint32_t child_link;
+    double axis[3];              /* unit axis in the child link frame */
+    opx_pose origin;             /* child link frame in the parent link frame at 0 */
+    int32_t has_limits;          /* 1 when the URDF has a <limit> element */
+    uint32_t mimic_joint;        /* joint this one mimics, or OPX_JOINT_NONE */
+    double lower, upper;         /* position limits (m or rad); continuous: -inf, +inf */
+    double velocity, effort;     /* as in the URDF (m/s or rad/s; N or N m); 0 when absent */
+    double mimic_multiplier;     /* position = multiplier * master + offset */
+    double mimic_offset;
+} opx_joint_info;
+
+#define OPX_JOINT_INFO_INIT {sizeof(opx_joint_info), 0, NULL, OPX_JOINT_NONE, OPX_JOINT_NONE, \
+    {0.0, 0.0, 0.0}, OPX_POSE_IDENTITY, 0, OPX_JOINT_NONE, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0}
+OPX_API opx_status opx_joint_info_init(opx_joint_info *info, size_t size);
+
+/* Number of joints (0 for a set not made from URDF). */
+OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count);
+/* The joint named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
+OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *name,
+                                          uint32_t *out_joint);
+OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint,
+                                          opx_joint_info *out);
+
+/*
+ * FK: sets every joint position and then every link pose in the map frame
+ * (and refits the link set like opx_linkset_set_poses).  `positions` has
+ * `count` = joint count values in model order; values of fixed, floating
+ * and planar joints are ignored; a mimic joint takes multiplier * master +
+ * offset and its own value is ignored.  All values must be finite.
+ * base_pose: the root link in the map frame (NULL: identity).  Links added
+ * with opx_linkset_add_link after loading keep their pose.  On error
+ * nothing changes.
+ */
+OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const double *positions,
+                                                   size_t count, const opx_pose *base_pose);
+/* As above, but only the `count` named joints change; the others keep
+ * their last values (initially 0).  An unknown name is an invalid
+ * argument (the name is in the message) and changes nothing. */
+OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links,
+                                                         const char *const *names,
+                                                         const double *positions, size_t count,
+                                                         const opx_pose *base_pose);
+/* The current joint positions in model order, as FK uses them (mimic
+ * joints: their computed value; fixed, floating, planar: 0).  *out_count
+ * gets the joint count; capacity below it: OPX_ERROR_BUFFER_TOO_SMALL
+ * (nothing written; out may then be NULL). */
+OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, double *out,
+                                                   size_t capacity, size_t *out_count);
+
+/* SRDF <disable_collisions> pairs (for reporting; the library does no
+ * self-collision checks): count, and the two link indices of pair i. */
+OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *links, uint32_t *out_count);
+OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *links, uint32_t pair,
+                                             uint32_t *out_link1, uint32_t *out_link2);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* OCTOPROX_ROBOT_H */
