@@ -105,8 +105,16 @@ void json_string(FILE *out, const char *text) {
 }
 
 void json_number(FILE *out, double value) {
-    if (isfinite(value)) fprintf(out, "%.17g", value);
-    else fputs("null", out);
+    char text[32];
+    if (!isfinite(value)) {
+        fputs("null", out);
+        return;
+    }
+    /* The shortest of %.15g .. %.17g that reads back exactly. */
+    snprintf(text, sizeof text, "%.15g", value);
+    if (strtod(text, NULL) != value) snprintf(text, sizeof text, "%.16g", value);
+    if (strtod(text, NULL) != value) snprintf(text, sizeof text, "%.17g", value);
+    fputs(text, out);
 }
 
 void json_vec3(FILE *out, const double v[3]) {

@@ -50,7 +50,7 @@ static void print_json(const char *path, const opx_octree_stats *s) {
 }
 
 static void print_bounds(const char *label, const double lo[3], const double hi[3]) {
-    printf("%-18s x %.3f .. %.3f, y %.3f .. %.3f, z %.3f .. %.3f m\n", label, lo[0], hi[0], lo[1], hi[1],
+    printf("%-17s x %.3f .. %.3f, y %.3f .. %.3f, z %.3f .. %.3f m\n", label, lo[0], hi[0], lo[1], hi[1],
            lo[2], hi[2]);
 }
 
