@@ -33,7 +33,12 @@ int cli_usage(const char *command, const char *format, ...) {
     return CLI_EXIT_USAGE;
 }
 
-int cli_library_fail(const char *command, opx_status status, const char *what) {
+int cli_library_fail(const char *command, opx_status status, const char *what_format, ...) {
+    char what[1024];
+    va_list args;
+    va_start(args, what_format);
+    vsnprintf(what, sizeof what, what_format, args);
+    va_end(args);
     const int code = status == OPX_ERROR_IO || status == OPX_ERROR_CORRUPT || status == OPX_ERROR_UNSUPPORTED ||
                              status == OPX_ERROR_INVALID_ARGUMENT
                          ? CLI_EXIT_INPUT

@@ -23,8 +23,13 @@ int cli_fail(const char *command, int code, const char *format, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-/* The exit code of a failed library call; prints the library's message. */
-int cli_library_fail(const char *command, opx_status status, const char *what);
+/* The exit code of a failed library call; prints what was being done
+ * (a format) and the library's message. */
+int cli_library_fail(const char *command, opx_status status, const char *what_format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 /* A usage error: the message, then "try 'octoprox COMMAND --help'". */
 int cli_usage(const char *command, const char *format, ...)
 #if defined(__GNUC__)

@@ -195,7 +195,7 @@ int cmd_check(int argc, char **argv) {
     int code = parse_arguments(argc, argv, &a);
     if (code >= 0) return code;
     status = opx_octree_load_file(a.map, NULL, &map);
-    if (status != OPX_OK) return cli_library_fail("check", status, "loading the map");
+    if (status != OPX_OK) return cli_library_fail("check", status, "loading the map %s", a.map);
     code = robot_load(&a.robot, "check", &links);
     if (code < 0) code = run(&a, map, links);
     opx_linkset_destroy(links);

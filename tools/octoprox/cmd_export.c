@@ -213,7 +213,7 @@ int cmd_export(int argc, char **argv) {
     int code = parse_arguments(argc, argv, &a);
     if (code >= 0) return code;
     status = opx_octree_load_file(a.map, NULL, &map);
-    if (status != OPX_OK) return cli_library_fail("export", status, "loading the map");
+    if (status != OPX_OK) return cli_library_fail("export", status, "loading the map %s", a.map);
     code = export_map(&a, map);
     opx_octree_destroy(map);
     return code;

@@ -88,7 +88,7 @@ int cmd_info(int argc, char **argv) {
     }
     if (path == NULL) return cli_usage("info", "no map file given");
     status = opx_octree_load_file(path, NULL, &map);
-    if (status != OPX_OK) return cli_library_fail("info", status, "loading the map");
+    if (status != OPX_OK) return cli_library_fail("info", status, "loading the map %s", path);
     status = opx_octree_get_stats(map, &stats);
     code = status == OPX_OK ? CLI_EXIT_OK : cli_library_fail("info", status, "reading the map");
     if (code == CLI_EXIT_OK) {

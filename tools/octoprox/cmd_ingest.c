@@ -120,7 +120,7 @@ static int open_map(const ingest_args *a, opx_octree **map, int *updated) {
         return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "creating the map");
     }
     status = opx_octree_load_file(a->output, NULL, map);
-    if (status != OPX_OK) return cli_library_fail("ingest", status, "loading the map to update");
+    if (status != OPX_OK) return cli_library_fail("ingest", status, "loading the map %s to update", a->output);
     opx_octree_get_options(*map, &options);
     if (a->resolution > 0.0 && a->resolution != options.resolution)
         return cli_usage("ingest", "%s has resolution %g m, not --res %g", a->output, options.resolution,
@@ -144,7 +144,7 @@ static int insert_cloud(const char *path, opx_octree *map, const opx_insert_opti
                                                          insert, &r->report);
     r->insert_ms = cli_now_ms() - start;
     cloud_free(&cloud);
-    return status == OPX_OK ? -1 : cli_library_fail("ingest", status, path);
+    return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "inserting %s", path);
 }
 
 static void print_cloud_json(const char *path, const cloud_result *r, int last) {
@@ -210,7 +210,7 @@ int cmd_ingest(int argc, char **argv) {
     code = open_map(&a, &map, &updated);
     if (code < 0) code = ingest_all(&a, map, results);
     if (code < 0 && (status = opx_octree_save_file(map, a.output, OPX_FORMAT_AUTO)) != OPX_OK)
-        code = cli_library_fail("ingest", status, "saving the map");
+        code = cli_library_fail("ingest", status, "saving the map %s", a.output);
     if (code < 0 && (status = opx_octree_get_stats(map, &stats)) != OPX_OK)
         code = cli_library_fail("ingest", status, "reading the map");
     if (code < 0) {

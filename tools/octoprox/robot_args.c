@@ -99,7 +99,7 @@ int robot_load(const robot_args *r, const char *command, opx_linkset **out) {
     options.package_dirs = r->package_dirs;
     options.package_dir_count = (size_t)r->package_dir_count;
     status = opx_linkset_load_urdf_file(r->urdf, &options, out);
-    if (status != OPX_OK) return cli_library_fail(command, status, "loading the robot");
+    if (status != OPX_OK) return cli_library_fail(command, status, "loading the robot %s", r->urdf);
     code = apply_joints(r, command, *out);
     if (code >= 0) {
         opx_linkset_destroy(*out);
