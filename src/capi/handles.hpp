@@ -7,6 +7,7 @@
 #include "query/direct_distance.hpp"
 #include "query/path_query.hpp"
 #include "robot/linkset.hpp"
+#include "robot/robot_model.hpp"
 
 #include <octoprox/octree.h>
 #include <octoprox/query.h>
@@ -19,6 +20,7 @@ struct opx_octree {
 
 struct opx_linkset {
     octoprox::LinkSet links;
+    octoprox::RobotModel robot;  // joints: empty unless made from URDF
 };
 
 struct opx_query {

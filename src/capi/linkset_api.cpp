@@ -155,7 +155,7 @@ OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out
     return guard(__func__, [&] {
         require_pointer(links, "links");
         require_pointer(out, "out");
-        *out = new opx_linkset{links->links};
+        *out = new opx_linkset{links->links, links->robot};
         return OPX_OK;
     });
 }

@@ -1,16 +1,89 @@
 // C shims: link sets from URDF, joints and forward kinematics.
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
+#include "robot/urdf_model.hpp"
 
 #include <octoprox/robot.h>
+
+#include <fstream>
+#include <memory>
+#include <sstream>
 
 using namespace octoprox;
 using namespace octoprox::capi;
 
 namespace {
 
-opx_status not_yet(const char *function) {
-    return fail(OPX_ERROR_UNSUPPORTED, function, "not implemented yet");
+// The caller's options, checked, with the default base directory.
+UrdfInput read_options(const opx_urdf_options *in, const std::string &default_base_dir) {
+    opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
+    read_versioned(in, options, "options");
+    UrdfInput input;
+    if (options.package_dir_count > 0) require_pointer(options.package_dirs, "options->package_dirs");
+    for (size_t i = 0; i < options.package_dir_count; ++i) {
+        if (options.package_dirs[i] == nullptr) throw_invalid(format("options->package_dirs[%zu] is NULL", i));
+        input.paths.package_dirs.emplace_back(options.package_dirs[i]);
+    }
+    input.paths.base_dir = options.base_dir != nullptr ? options.base_dir : default_base_dir;
+    if (options.srdf_path != nullptr) {
+        if (options.srdf_path[0] == '\0') throw_invalid("options->srdf_path is empty (NULL means no SRDF)");
+        input.srdf_path = options.srdf_path;
+    }
+    return input;
+}
+
+std::string read_text_file(const char *path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    if (!file_exists(path) || !(text << file.rdbuf()))
+        throw ApiError(OPX_ERROR_IO, format("path '%.200s' cannot be read", path));
+    return text.str();
+}
+
+opx_status load(UrdfInput input, opx_linkset **out) {
+    auto handle = std::make_unique<opx_linkset>();
+    load_urdf(input, handle->links, handle->robot);
+    *out = handle.release();
+    return OPX_OK;
+}
+
+// The joint tree of a link set made from URDF; others have none.
+JointTree &require_joints(opx_linkset *links) {
+    require_pointer(links, "links");
+    if (links->robot.joints.empty())
+        throw ApiError(OPX_ERROR_UNSUPPORTED, "links has no joint tree (it was not made from URDF)");
+    return links->robot.joints;
+}
+
+uint32_t require_joint(const opx_linkset *links, uint32_t joint) {
+    if (joint >= links->robot.joints.joint_count())
+        throw_invalid(format("joint %u does not exist (the set has %zu joints)", joint,
+                             links->robot.joints.joint_count()));
+    return joint;
+}
+
+Pose read_base_pose(const opx_pose *base_pose) {
+    return base_pose == nullptr ? Pose() : read_pose(*base_pose, "base_pose");
+}
+
+opx_pose to_abi(const Pose &pose) {
+    const Eigen::Quaterniond q(pose.rotation);
+    return opx_pose{{pose.translation.x(), pose.translation.y(), pose.translation.z()}, {q.x(), q.y(), q.z(), q.w()}};
+}
+
+opx_joint_info joint_info(const Joint &joint) {
+    opx_joint_info info = OPX_JOINT_INFO_INIT;
+    info.type = static_cast<int32_t>(joint.type);
+    info.name = joint.name.c_str();
+    info.parent_link = joint.parent_link, info.child_link = joint.child_link;
+    for (int i = 0; i < 3; ++i) info.axis[i] = joint.axis[i];
+    info.origin = to_abi(joint.origin);
+    info.has_limits = joint.has_limits ? 1 : 0;
+    info.mimic_joint = joint.mimic;
+    info.lower = joint.lower, info.upper = joint.upper;
+    info.velocity = joint.velocity, info.effort = joint.effort;
+    info.mimic_multiplier = joint.multiplier, info.mimic_offset = joint.offset;
+    return info;
 }
 
 }  // namespace
@@ -25,30 +98,133 @@ OPX_API opx_status opx_joint_info_init(opx_joint_info *info, size_t size) {
     return init_struct(__func__, info, size, opx_joint_info(OPX_JOINT_INFO_INIT), "info");
 }
 
-OPX_API opx_status opx_linkset_load_urdf_file(const char *, const opx_urdf_options *, opx_linkset **out) {
+OPX_API opx_status opx_linkset_load_urdf_file(const char *path, const opx_urdf_options *options, opx_linkset **out) {
     if (out != nullptr) *out = nullptr;
-    return not_yet(__func__);
+    return guard(__func__, [&] {
+        require_pointer(path, "path");
+        require_pointer(out, "out");
+        UrdfInput input = read_options(options, parent_dir(path));
+        input.xml = read_text_file(path);
+        input.source = format("path '%.200s'", path);
+        return load(std::move(input), out);
+    });
 }
-OPX_API opx_status opx_linkset_load_urdf_string(const char *, const opx_urdf_options *, opx_linkset **out) {
+
+OPX_API opx_status opx_linkset_load_urdf_string(const char *xml, const opx_urdf_options *options, opx_linkset **out) {
     if (out != nullptr) *out = nullptr;
-    return not_yet(__func__);
+    return guard(__func__, [&] {
+        require_pointer(xml, "xml");
+        require_pointer(out, "out");
+        UrdfInput input = read_options(options, "");
+        input.xml = xml;
+        input.source = "xml";
+        return load(std::move(input), out);
+    });
 }
-OPX_API opx_status opx_linkset_joint_count(const opx_linkset *, uint32_t *) { return not_yet(__func__); }
-OPX_API opx_status opx_linkset_find_joint(const opx_linkset *, const char *, uint32_t *) { return not_yet(__func__); }
-OPX_API opx_status opx_linkset_joint_info(const opx_linkset *, uint32_t, opx_joint_info *) { return not_yet(__func__); }
-OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *, const double *, size_t, const opx_pose *) {
-    return not_yet(__func__);
+
+OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->robot.joints.joint_count());
+        return OPX_OK;
+    });
 }
-OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *, const char *const *, const double *,
-                                                         size_t, const opx_pose *) {
-    return not_yet(__func__);
+
+OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *name, uint32_t *out_joint) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(name, "name");
+        require_pointer(out_joint, "out_joint");
+        const uint32_t joint = links->robot.joints.find(name);
+        if (joint == kNoIndex) throw_invalid(format("name \"%.80s\": no joint has this name", name));
+        *out_joint = joint;
+        return OPX_OK;
+    });
 }
-OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *, double *, size_t, size_t *) {
-    return not_yet(__func__);
+
+OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint, opx_joint_info *out) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out, "out");
+        write_versioned(out, joint_info(links->robot.joints.joint(require_joint(links, joint))), "out");
+        return OPX_OK;
+    });
 }
-OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *, uint32_t *) { return not_yet(__func__); }
-OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *, uint32_t, uint32_t *, uint32_t *) {
-    return not_yet(__func__);
+
+OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const double *positions, size_t count,
+                                                   const opx_pose *base_pose) {
+    return guard(__func__, [&] {
+        JointTree &joints = require_joints(links);
+        if (count != joints.joint_count())
+            throw_invalid(format("count %zu differs from the number of joints, %zu", count, joints.joint_count()));
+        if (count > 0) require_pointer(positions, "positions");
+        for (size_t i = 0; i < count; ++i) require_finite(positions[i], format("positions[%zu]", i).c_str());
+        const Pose base = read_base_pose(base_pose);
+        joints.set_commanded(positions);
+        joints.update_positions();
+        links->robot.apply(links->links, base);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links, const char *const *names,
+                                                         const double *positions, size_t count,
+                                                         const opx_pose *base_pose) {
+    return guard(__func__, [&] {
+        JointTree &joints = require_joints(links);
+        if (count > 0) require_pointer(names, "names"), require_pointer(positions, "positions");
+        for (size_t i = 0; i < count; ++i) {
+            if (names[i] == nullptr) throw_invalid(format("names[%zu] is NULL", i));
+            if (joints.find(names[i]) == kNoIndex)
+                throw_invalid(format("names[%zu] \"%.80s\": no joint has this name", i, names[i]));
+            require_finite(positions[i], format("positions[%zu] (joint \"%.80s\")", i, names[i]).c_str());
+        }
+        const Pose base = read_base_pose(base_pose);
+        for (size_t i = 0; i < count; ++i) joints.set_commanded(joints.find(names[i]), positions[i]);
+        joints.update_positions();
+        links->robot.apply(links->links, base);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, double *out, size_t capacity,
+                                                   size_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        const std::vector<double> &positions = links->robot.joints.positions();
+        *out_count = positions.size();
+        if (capacity < positions.size())
+            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL, format("capacity %zu is smaller than the joint count %zu",
+                                                              capacity, positions.size()));
+        if (!positions.empty()) require_pointer(out, "out");
+        std::copy(positions.begin(), positions.end(), out);
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *links, uint32_t *out_count) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->robot.disabled_pairs.size());
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *links, uint32_t pair, uint32_t *out_link1,
+                                             uint32_t *out_link2) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_link1, "out_link1");
+        require_pointer(out_link2, "out_link2");
+        const auto &pairs = links->robot.disabled_pairs;
+        if (pair >= pairs.size())
+            throw_invalid(format("pair %u does not exist (the set has %zu disabled pairs)", pair, pairs.size()));
+        *out_link1 = pairs[pair][0], *out_link2 = pairs[pair][1];
+        return OPX_OK;
+    });
 }
 
 }  // extern "C"

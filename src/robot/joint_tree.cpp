@@ -1,0 +1,124 @@
+#include "robot/joint_tree.hpp"
+
+#include "capi/error.hpp"
+
+namespace octoprox {
+namespace {
+
+[[noreturn]] void throw_tree_error(const std::string &source, const std::string &what) {
+    throw_corrupt(source + ": " + what);
+}
+
+}  // namespace
+
+void JointTree::build(std::vector<Joint> joints, size_t link_count, uint32_t root_link,
+                      const std::string &source) {
+    joints_ = std::move(joints);
+    link_count_ = link_count;
+    root_link_ = root_link;
+    by_name_.clear();
+    for (uint32_t j = 0; j < joints_.size(); ++j)
+        if (!by_name_.emplace(joints_[j].name, j).second)
+            throw_tree_error(source, "two joints are named '" + joints_[j].name + "'");
+    check_links(source);
+    order_joints(source);
+    resolve_mimics(source);
+    commanded_.assign(joints_.size(), 0.0);
+    positions_.assign(joints_.size(), 0.0);
+    update_positions();
+}
+
+uint32_t JointTree::find(const std::string &name) const {
+    const auto it = by_name_.find(name);
+    return it == by_name_.end() ? kNoIndex : it->second;
+}
+
+void JointTree::check_links(const std::string &source) const {
+    if (root_link_ >= link_count_) throw_tree_error(source, "the model has no root link");
+    std::vector<bool> is_child(link_count_, false);
+    for (const Joint &j : joints_) {
+        if (j.parent_link >= link_count_ || j.child_link >= link_count_)
+            throw_tree_error(source, "joint '" + j.name + "' names a link that does not exist");
+        if (j.child_link == root_link_ || is_child[j.child_link])
+            throw_tree_error(source, "joint '" + j.name + "': its child link has another parent joint");
+        is_child[j.child_link] = true;
+    }
+    for (size_t link = 0; link < link_count_; ++link)
+        if (link != root_link_ && !is_child[link])
+            throw_tree_error(source, "link " + std::to_string(link) + " is neither the root nor the child of a joint");
+}
+
+// Parents before children: a walk down from the root.  A joint the walk
+// does not reach hangs off a cycle or a second root.
+void JointTree::order_joints(const std::string &source) {
+    std::vector<std::vector<uint32_t>> children(link_count_);
+    for (uint32_t j = 0; j < joints_.size(); ++j) children[joints_[j].parent_link].push_back(j);
+    order_.clear();
+    std::vector<uint32_t> stack{root_link_};
+    while (!stack.empty()) {
+        const uint32_t link = stack.back();
+        stack.pop_back();
+        for (uint32_t j : children[link]) {
+            order_.push_back(j);
+            stack.push_back(joints_[j].child_link);
+        }
+    }
+    if (order_.size() != joints_.size())
+        throw_tree_error(source, "the joints do not form one tree below the root link");
+}
+
+// A mimic of a mimic follows the first joint of its chain:
+// a = m1 * b + o1, b = m2 * c + o2  =>  a = m1 m2 c + (m1 o2 + o1).
+void JointTree::resolve_mimics(const std::string &source) {
+    const size_t n = joints_.size();
+    master_.assign(n, kNoIndex);
+    multiplier_.assign(n, 1.0);
+    offset_.assign(n, 0.0);
+    for (uint32_t j = 0; j < n; ++j) {
+        uint32_t current = j;
+        double m = 1.0, o = 0.0;
+        for (size_t steps = 0; joints_[current].mimic != kNoIndex; ++steps) {
+            if (steps >= n) throw_tree_error(source, "joint '" + joints_[j].name + "': its mimic joints form a loop");
+            const Joint &link = joints_[current];
+            o = m * link.offset + o;
+            m = m * link.multiplier;
+            current = link.mimic;
+        }
+        master_[j] = current, multiplier_[j] = m, offset_[j] = o;
+    }
+}
+
+void JointTree::set_commanded(const double *values) {
+    for (size_t j = 0; j < commanded_.size(); ++j) commanded_[j] = values[j];
+}
+
+void JointTree::update_positions() {
+    for (size_t j = 0; j < joints_.size(); ++j) {
+        const uint32_t master = master_[j];
+        const double master_value = joints_[master].moves() ? commanded_[master] : 0.0;
+        positions_[j] = joints_[j].moves() ? multiplier_[j] * master_value + offset_[j] : 0.0;
+    }
+}
+
+void JointTree::link_poses(const Pose &base, std::vector<Pose> &poses) const {
+    poses[root_link_] = base;
+    for (uint32_t j : order_) {
+        const Joint &joint = joints_[j];
+        const Pose &parent = poses[joint.parent_link];
+        Pose &child = poses[joint.child_link];
+        // child = parent * origin * motion(q)
+        child.rotation = parent.rotation * joint.origin.rotation;
+        child.translation = parent.apply(joint.origin.translation);
+        const double q = positions_[j];
+        switch (joint.type) {
+        case JointType::kRevolute:
+        case JointType::kContinuous:
+            child.rotation = child.rotation * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+            break;
+        case JointType::kPrismatic: child.translation += child.rotation * (q * joint.axis); break;
+        default: break;
+        }
+    }
+}
+
+}  // namespace octoprox

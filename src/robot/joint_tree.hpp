@@ -1,0 +1,76 @@
+// A robot's joint tree and its forward kinematics (FK).  Joints keep the
+// model's order; everything FK needs per call (a parents-first order,
+// fixed origins, resolved mimic masters) is computed once in build(), so
+// link_poses() allocates nothing and touches each joint once.
+#pragma once
+
+#include "geometry/pose.hpp"
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace octoprox {
+
+// Values equal to the OPX_JOINT_* codes of the C ABI.
+enum class JointType : int { kFixed = 0, kRevolute, kContinuous, kPrismatic, kFloating, kPlanar };
+
+constexpr uint32_t kNoIndex = UINT32_MAX;
+
+struct Joint {
+    std::string name;
+    JointType type = JointType::kFixed;
+    uint32_t parent_link = kNoIndex, child_link = kNoIndex;
+    Pose origin;                 // child link frame in the parent link frame at 0
+    Vec3 axis = Vec3::UnitX();   // unit, child link frame
+    bool has_limits = false;
+    double lower = 0.0, upper = 0.0, velocity = 0.0, effort = 0.0;
+    uint32_t mimic = kNoIndex;   // the joint this one copies
+    double multiplier = 1.0, offset = 0.0;
+
+    bool moves() const {
+        return type == JointType::kRevolute || type == JointType::kContinuous || type == JointType::kPrismatic;
+    }
+};
+
+class JointTree {
+public:
+    // Checks the tree (every link but the root is the child of exactly one
+    // joint, no cycles, mimic joints exist and do not loop) and precomputes
+    // the FK order.  Throws ApiError(OPX_ERROR_CORRUPT) naming `source`.
+    void build(std::vector<Joint> joints, size_t link_count, uint32_t root_link, const std::string &source);
+
+    bool empty() const { return link_count_ == 0; }
+    size_t joint_count() const { return joints_.size(); }
+    size_t link_count() const { return link_count_; }
+    uint32_t root_link() const { return root_link_; }
+    const Joint &joint(uint32_t index) const { return joints_[index]; }
+    uint32_t find(const std::string &name) const;  // kNoIndex when absent
+
+    // The values callers set, per joint; FK reads positions().
+    void set_commanded(const double *values);  // joint_count() values
+    void set_commanded(uint32_t joint, double value) { commanded_[joint] = value; }
+    void update_positions();                    // after set_commanded
+    const std::vector<double> &positions() const { return positions_; }
+
+    // Poses of links 0..link_count()-1 in the map frame; `poses` must
+    // hold at least link_count() entries.
+    void link_poses(const Pose &base, std::vector<Pose> &poses) const;
+
+private:
+    void check_links(const std::string &source) const;
+    void order_joints(const std::string &source);
+    void resolve_mimics(const std::string &source);
+
+    std::vector<Joint> joints_;
+    std::unordered_map<std::string, uint32_t> by_name_;
+    std::vector<uint32_t> order_;      // joint indices, parents first
+    std::vector<uint32_t> master_;     // per joint: the non-mimic joint it follows
+    std::vector<double> multiplier_, offset_;  // composed along mimic chains
+    std::vector<double> commanded_, positions_;
+    size_t link_count_ = 0;
+    uint32_t root_link_ = kNoIndex;
+};
+
+}  // namespace octoprox

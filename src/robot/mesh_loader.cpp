@@ -1,0 +1,85 @@
+#include "robot/mesh_loader.hpp"
+
+#include "capi/error.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace octoprox {
+namespace {
+
+Eigen::Matrix4d to_eigen(const aiMatrix4x4 &m) {
+    Eigen::Matrix4d out;
+    out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4;
+    return out;
+}
+
+// Appends the triangles of one assimp mesh, its vertices taken to the
+// file's root frame by `transform`.
+void append_mesh(const aiMesh &mesh, const Eigen::Matrix4d &transform, TriangleMesh &out) {
+    const uint32_t first = static_cast<uint32_t>(out.vertices.size());
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        const aiVector3D &p = mesh.mVertices[v];
+        out.vertices.push_back((transform * Eigen::Vector4d(p.x, p.y, p.z, 1.0)).head<3>());
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace &face = mesh.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines are no surface
+        out.triangles.push_back({first + face.mIndices[0], first + face.mIndices[1], first + face.mIndices[2]});
+    }
+}
+
+void append_node(const aiScene &scene, const aiNode &node, const Eigen::Matrix4d &parent, TriangleMesh &out) {
+    const Eigen::Matrix4d transform = parent * to_eigen(node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) append_mesh(*scene.mMeshes[node.mMeshes[i]], transform, out);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) append_node(scene, *node.mChildren[i], transform, out);
+}
+
+// Drops vertices no triangle uses (they would only widen the bounds) and
+// rejects non-finite coordinates.
+void keep_used_vertices(TriangleMesh &mesh, const std::string &path) {
+    std::vector<uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
+    std::vector<Vec3> used;
+    for (auto &triangle : mesh.triangles) {
+        for (uint32_t &index : triangle) {
+            if (remap[index] == UINT32_MAX) {
+                if (!mesh.vertices[index].allFinite())
+                    throw_corrupt("mesh file '" + path + "' has a vertex that is not finite");
+                remap[index] = static_cast<uint32_t>(used.size());
+                used.push_back(mesh.vertices[index]);
+            }
+            index = remap[index];
+        }
+    }
+    mesh.vertices = std::move(used);
+}
+
+}  // namespace
+
+TriangleMesh load_mesh_file(const std::string &path) {
+    if (!std::ifstream(path, std::ios::binary).good())
+        throw ApiError(OPX_ERROR_IO, "mesh file '" + path + "' cannot be read");
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene *scene = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    if (scene == nullptr || scene->mRootNode == nullptr)
+        throw_corrupt("mesh file '" + path + "' cannot be imported: " + importer.GetErrorString());
+    TriangleMesh mesh;
+    append_node(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), mesh);
+    if (mesh.triangles.empty()) throw_corrupt("mesh file '" + path + "' has no triangles");
+    keep_used_vertices(mesh, path);
+    return mesh;
+}
+
+TriangleMesh scaled(const TriangleMesh &mesh, const Vec3 &scale) {
+    TriangleMesh out = mesh;
+    for (Vec3 &v : out.vertices) v = v.cwiseProduct(scale);
+    return out;
+}
+
+}  // namespace octoprox
