@@ -78,6 +78,15 @@ double json_field(const char *json, const char *key) {
     return value;
 }
 
+double json_field_in(const char *json, const char *object, const char *key) {
+    char pattern[128];
+    const char *at;
+    snprintf(pattern, sizeof pattern, "\"%s\": {", object);
+    at = strstr(json, pattern);
+    if (at == NULL) fail_msg("no object \"%s\" in %s", object, json);
+    return json_field(at + strlen(pattern), key);
+}
+
 int json_bool(const char *json, const char *key) {
     char yes[128], no[128];
     snprintf(yes, sizeof yes, "\"%s\": true", key);

@@ -15,7 +15,8 @@ typedef struct cli_result {
 
 /* A fresh scratch folder (made once per test program). */
 const char *scratch_dir(void);
-/* scratch_dir()/name, in a static buffer per call slot (4 slots). */
+/* scratch_dir()/name, in a static buffer per call slot (4 slots: copy a
+ * path that must outlive four more calls). */
 const char *scratch_path(const char *name);
 /* Writes text to scratch_dir()/name; returns the full path. */
 const char *write_text(const char *name, const char *text);
@@ -31,6 +32,8 @@ void run_cli(cli_result *r, const char *arguments_format, ...)
 /* The number after "\"key\": " in json (the first one); fails the test
  * when missing. */
 double json_field(const char *json, const char *key);
+/* The number after "\"key\": " inside the object "\"object\": {...". */
+double json_field_in(const char *json, const char *object, const char *key);
 /* 1 when "\"key\": true" is in json, 0 for false; fails otherwise. */
 int json_bool(const char *json, const char *key);
 
