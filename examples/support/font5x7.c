@@ -1,6 +1,8 @@
 /* A 5x7 bitmap font in the style of HD44780 displays: see font5x7.h. */
 #include "font5x7.h"
 
+#include <stddef.h>
+
 typedef struct glyph {
     char c;
     uint8_t rows[7];
