@@ -74,6 +74,8 @@ static const opx_pose kArmBase = {{2.75, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}};
 static const double kStart[DEMO_ARM_JOINTS] = {0.0, -0.3, 0.0, 1.0, 0.0, 0.8, 0.0};
 static const double kGoal[DEMO_ARM_JOINTS] = {0.0, 1.75, 0.0, 0.2, 0.0, -0.3, 1.57};
 
+static int is_pedestal(const char *name) { return strcmp(name, "pedestal") == 0; }
+
 static int load_arm(const char *out_dir, opx_linkset **out) {
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
     uint32_t pedestal;
@@ -161,6 +163,7 @@ static int run_room(const demo_args *a) {
         s.goal[j] = kGoal[j];
     }
     s.waypoint_count = a->quick ? 11 : 41;
+    s.is_body_link = is_pedestal;
     side_view(&s, &frame, a->quick);
     s.out_dir = a->out_dir;
     s.picture_name = "opx-demo.png";

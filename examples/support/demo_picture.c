@@ -16,7 +16,7 @@
 
 static const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
 static const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {255, 140, 0};
-static const colour kText = {20, 20, 20}, kSensor = {0, 120, 200};
+static const colour kText = {20, 20, 20}, kSensor = {0, 120, 200}, kBody = {90, 90, 100};
 static const colour kArmColours[PICTURE_MAX_ARMS] = {{30, 150, 70}, {40, 140, 140}, {50, 100, 200}, {120, 70, 190},
                                                      {170, 60, 160}, {110, 110, 40}, {60, 60, 60}, {0, 0, 0}};
 
@@ -237,6 +237,7 @@ int demo_picture_write(const picture_input *in, const char *path) {
         return -1;
     draw_slice(&f, in->map);
     draw_cost_boxes(&f, in);
+    if (in->body != NULL) draw_arm(&f, in->body, kBody, 0);
     for (i = 0; i < in->arm_count; ++i) draw_arm(&f, in->arms[i], kArmColours[i], in->arm_collides[i]);
     draw_collisions(&f, in);
     draw_sensor(&f, in);

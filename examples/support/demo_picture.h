@@ -32,6 +32,8 @@ typedef struct picture_input {
     double sensor[3];
     double fov_edges[2][3];
     int fov_edge_count;
+    /* The robot's parts that do not move (may be NULL), drawn in grey. */
+    const mesh_out *body;
     /* Robot silhouettes (map-frame triangles) and their labels. */
     const mesh_out *arms[PICTURE_MAX_ARMS];
     const char *arm_labels[PICTURE_MAX_ARMS];

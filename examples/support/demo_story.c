@@ -186,25 +186,46 @@ static size_t pick_waypoints(const demo_story *s, const story_state *st, size_t 
     return count;
 }
 
+/* groups[l]: 0 to draw link l in this mesh, UINT32_MAX to leave it out. */
+static void link_groups(const demo_story *s, uint32_t link_count, int body, uint32_t *groups) {
+    uint32_t l;
+    for (l = 0; l < link_count; ++l) {
+        const char *name = "";
+        int is_body;
+        opx_linkset_link_name(s->robot, l, &name);
+        is_body = s->is_body_link != NULL && s->is_body_link(name);
+        groups[l] = is_body == body ? 0 : UINT32_MAX;
+    }
+}
+
+static void robot_mesh(const demo_story *s, const story_state *st, size_t waypoint, const uint32_t *groups, mesh_out *m) {
+    mesh_init(m);
+    mesh_add_group(m, "robot", 0, 0, 0);
+    opx_linkset_set_poses(s->robot, st->poses + waypoint * st->link_count, st->link_count, 0);
+    linkset_to_mesh(s->robot, m, groups);
+}
+
 static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
-    static mesh_out arms[PICTURE_MAX_ARMS];
+    static mesh_out arms[PICTURE_MAX_ARMS], body;
     static char labels[PICTURE_MAX_ARMS][32];
-    static uint32_t groups[4096];
+    uint32_t *groups = malloc((st->link_count + 1) * sizeof *groups);
     size_t picked[5], count = pick_waypoints(s, st, picked), i, w;
     double *centers = NULL, *sizes = NULL;
     size_t cells = 0;
     int status;
     picture_input *p = &s->picture;
+    if (groups == NULL) return -1;
     for (w = 0; w < s->waypoint_count; ++w) {
         if (!st->results[w].collided[0]) continue;
         opx_linkset_set_poses(s->robot, st->poses + w * st->link_count, st->link_count, 0);
         demo_colliding_cells(st->map, s->robot, &centers, &sizes, &cells);
     }
+    link_groups(s, st->link_count, 1, groups);
+    robot_mesh(s, st, 0, groups, &body);
+    p->body = body.face_count > 0 ? &body : NULL;
+    link_groups(s, st->link_count, 0, groups);
     for (i = 0; i < count && i < PICTURE_MAX_ARMS; ++i) {
-        mesh_init(&arms[i]);
-        mesh_add_group(&arms[i], "arm", 0, 0, 0);
-        opx_linkset_set_poses(s->robot, st->poses + picked[i] * st->link_count, st->link_count, 0);
-        linkset_to_mesh(s->robot, &arms[i], groups);
+        robot_mesh(s, st, picked[i], groups, &arms[i]);
         snprintf(labels[i], sizeof labels[i], "WAYPOINT %zu", picked[i]);
         p->arms[i] = &arms[i];
         p->arm_labels[i] = labels[i];
@@ -221,6 +242,8 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
     snprintf(path, path_size, "%s/%s", s->out_dir, s->picture_name);
     status = demo_picture_write(p, path);
     for (i = 0; i < (size_t)p->arm_count; ++i) mesh_free(&arms[i]);
+    mesh_free(&body);
+    free(groups);
     free(centers);
     free(sizes);
     return status;

@@ -30,6 +30,9 @@ typedef struct demo_story {
     double start[STORY_MAX_JOINTS], goal[STORY_MAX_JOINTS];
     size_t joint_count;
     size_t waypoint_count;
+    /* Links that do not move along the path (drawn once, in grey); NULL:
+     * every link moves. */
+    int (*is_body_link)(const char *name);
     /* What the picture shows (map is filled in by the story). */
     picture_input picture;
     const char *out_dir, *picture_name, *map_name;

@@ -13,7 +13,7 @@
 void shape_to_mesh(const opx_shape *shape, const opx_pose *link_pose, mesh_out *mesh, uint32_t group);
 
 /* Appends every shape of every link of `links` at its current pose;
- * link l goes to group groups[l]. */
+ * link l goes to group groups[l] (UINT32_MAX: the link is left out). */
 int linkset_to_mesh(const opx_linkset *links, mesh_out *mesh, const uint32_t *groups);
 
 /* Pose helpers: out = a * b, and a point mapped by a pose. */
