@@ -70,7 +70,7 @@ void check_print_contacts(const check_context *c, const opx_collision_result *r)
     if (link_count > sizeof mark) link_count = sizeof mark;
     colliding_links(c, r->contact_count, mark, link_count);
     if (c->json) printf(",\n  \"contact_count\": %llu,\n  \"colliding_links\": [", (unsigned long long)r->contact_count);
-    else printf("contacts   %llu%s\ncolliding links:", (unsigned long long)r->contact_count, r->contact_count ? "" : " (none)");
+    else printf("contacts   %llu\ncolliding links:%s", (unsigned long long)r->contact_count, r->contact_count ? "" : " none");
     for (l = 0; l < link_count; ++l) {
         if (!mark[l]) continue;
         if (c->json) {
