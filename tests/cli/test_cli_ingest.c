@@ -124,6 +124,7 @@ static void every_format_gives_the_library_map(void **state) {
         snprintf(map, sizeof map, "map%d.bt", i);
         run_cli(&r, "ingest '%s' --sensor-pose 0,0,1 --res 0.1 -o '%s' --json", cloud, scratch_path(map));
         assert_int_equal(r.code, 0);
+        assert_string_equal(r.err, ""); /* stderr is a file here, not a terminal: no progress bar */
         assert_int_equal(json_bool(r.out, "updated"), 0);
         assert_int_equal((long long)json_field(r.out, "points_used"), N_POINTS);
         assert_int_equal((long long)json_field(r.out, "occupied"), (long long)expected.leaves_occupied);
