@@ -23,13 +23,16 @@
  *     <visual> elements are ignored (their files need not exist).
  *   - Meshes are read with assimp (STL, DAE, OBJ and the other formats it
  *     knows): all meshes of a file are merged into one triangle mesh with
- *     the file's node transforms applied (so a DAE's unit and up axis are
- *     honoured as assimp applies them), then the URDF scale.  A mesh is a
+ *     the file's node transforms applied, then the URDF scale.  A DAE's
+ *     <unit> is applied (its coordinates become metres); its <up_axis> is
+ *     not turned into assimp's Y-up, so coordinates stay as written (z up),
+ *     as ROS tools (RViz, MoveIt) read them.  A mesh is a
  *     SURFACE (see linkset.h): a cell wholly inside a closed mesh touches no
  *     triangle.
- *   - Geometry urdfdom does not know (e.g. <capsule>) makes the whole URDF
- *     invalid: the load fails with OPX_ERROR_CORRUPT.  A box, sphere or
- *     cylinder with a size <= 0 or a mesh with a zero scale likewise.
+ *   - Other collision geometry (e.g. <capsule>) fails the load with
+ *     OPX_ERROR_UNSUPPORTED naming the link (it is never silently dropped).
+ *     A box, sphere or cylinder with a size <= 0, a mesh with a zero scale,
+ *     or a <collision> urdfdom cannot read: OPX_ERROR_CORRUPT.
  *
  * Mesh file names:
  *   - "package://NAME/rest": for each entry DIR of package_dirs in order,
@@ -78,8 +81,10 @@ OPX_API opx_status opx_urdf_options_init(opx_urdf_options *options, size_t size)
  * defaults).  All link poses start at FK with every joint at 0 and the
  * root link at the map origin.  Errors: OPX_ERROR_IO (file or mesh cannot
  * be read, unknown package), OPX_ERROR_CORRUPT (malformed XML or URDF, bad
- * geometry, a mesh without triangles, a bad SRDF), OPX_ERROR_INVALID_ARGUMENT
- * (NULLs); *out is NULL on failure.
+ * geometry, a mesh without triangles, a bad SRDF), OPX_ERROR_UNSUPPORTED
+ * (collision geometry other than box, sphere, cylinder, mesh),
+ * OPX_ERROR_INVALID_ARGUMENT (NULLs, bad options); *out is NULL on failure.
+ * urdfdom prints its own reasons for rejecting a URDF on stderr.
  */
 OPX_API opx_status opx_linkset_load_urdf_file(const char *path, const opx_urdf_options *options,
                                               opx_linkset **out);

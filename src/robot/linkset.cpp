@@ -105,11 +105,11 @@ void LinkSet::build_topology() {
     refit();
 }
 
+// Reuses box_scratch_, so new poses allocate nothing once the set is built.
 void LinkSet::refit() {
-    std::vector<Aabb> boxes;
-    boxes.reserve(placed_.size());
-    for (const PlacedShape &p : placed_) boxes.push_back(p.box);
-    tree_.refit(boxes);
+    box_scratch_.clear();
+    for (const PlacedShape &p : placed_) box_scratch_.push_back(p.box);
+    tree_.refit(box_scratch_);
 }
 
 }  // namespace octoprox

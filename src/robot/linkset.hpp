@@ -60,6 +60,7 @@ private:
     std::vector<PlacedShape> placed_;
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_
     AabbTree tree_;
+    std::vector<Aabb> box_scratch_;       // refit's input, capacity kept
     bool topology_from_poses_ = false;
     uint64_t generation_ = 0;
     uint64_t identity_ = next_identity();

@@ -3,6 +3,7 @@
 #include "capi/error.hpp"
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -65,6 +66,10 @@ TriangleMesh load_mesh_file(const std::string &path) {
         throw ApiError(OPX_ERROR_IO, "mesh file '" + path + "' cannot be read");
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    // assimp would turn a Z_UP Collada file to its own Y-up convention; ROS
+    // (URDF, RViz, MoveIt) keeps mesh coordinates as written, z up.  The
+    // <unit> scale is still applied (to the root node, which we honour).
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     const aiScene *scene = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (scene == nullptr || scene->mRootNode == nullptr)

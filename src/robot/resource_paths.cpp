@@ -56,12 +56,13 @@ std::string resolve_package(const ResourcePaths &paths, const std::string &uri) 
     const std::vector<std::string> candidates = package_candidates(paths, name, rest);
     for (const std::string &path : candidates)
         if (file_exists(path)) return path;
+    const std::string hint = "; a package folder named otherwise is mapped by an entry '" + name + "=DIR'";
     if (candidates.empty())
         throw ApiError(OPX_ERROR_IO, "mesh '" + uri + "': package '" + name +
-                                         "' is unknown (no options->package_dirs entry can hold it)");
+                                         "' is unknown (options->package_dirs is empty" + hint + ")");
     std::string tried;
     for (const std::string &path : candidates) tried += (tried.empty() ? "" : ", ") + path;
-    throw ApiError(OPX_ERROR_IO, "mesh '" + uri + "': package '" + name + "' has no such file (tried " + tried + ")");
+    throw ApiError(OPX_ERROR_IO, "mesh '" + uri + "': package '" + name + "' has no such file (tried " + tried + hint + ")");
 }
 
 }  // namespace

@@ -9,12 +9,11 @@ Aabb triangle_box(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
     return box;
 }
 
-std::vector<Aabb> triangle_boxes(const std::vector<Vec3> &vertices,
-                                 const std::vector<std::array<uint32_t, 3>> &triangles) {
-    std::vector<Aabb> boxes;
-    boxes.reserve(triangles.size());
+// Into `boxes`, whose capacity is reused: placing a mesh again allocates nothing.
+void triangle_boxes(const std::vector<Vec3> &vertices, const std::vector<std::array<uint32_t, 3>> &triangles,
+                    std::vector<Aabb> &boxes) {
+    boxes.clear();
     for (const auto &t : triangles) boxes.push_back(triangle_box(vertices[t[0]], vertices[t[1]], vertices[t[2]]));
-    return boxes;
 }
 
 // Bounds of the core in the map frame, before inflation.
@@ -44,7 +43,11 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
 
 }  // namespace
 
-void build_mesh_tree(ShapeDef &def) { def.mesh_tree.build(triangle_boxes(def.vertices, def.triangles)); }
+void build_mesh_tree(ShapeDef &def) {
+    std::vector<Aabb> boxes;
+    triangle_boxes(def.vertices, def.triangles, boxes);
+    def.mesh_tree.build(boxes);
+}
 
 Convex PlacedShape::triangle(int32_t index) const {
     const auto &t = def->triangles[index];
@@ -95,7 +98,8 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
     }
     if (def.kind == ShapeKind::kMesh) {
         if (out.mesh_tree.size() != def.mesh_tree.size()) out.mesh_tree = def.mesh_tree;
-        out.mesh_tree.refit(triangle_boxes(out.world_vertices, def.triangles));
+        triangle_boxes(out.world_vertices, def.triangles, out.triangle_box_scratch);
+        out.mesh_tree.refit(out.triangle_box_scratch);
     }
     out.box = Aabb();
     if (enabled) {

@@ -40,6 +40,7 @@ struct PlacedShape {
     Aabb box;                // bounds of the inflated shape; empty when disabled
     std::vector<Vec3> world_vertices;  // convex hull and mesh, map frame
     AabbTree mesh_tree;                // mesh: refit in the map frame
+    std::vector<Aabb> triangle_box_scratch;  // mesh: reused by every placement
     const ShapeDef *def = nullptr;
 
     // A triangle of the mesh as a convex core.

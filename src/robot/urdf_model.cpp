@@ -99,13 +99,27 @@ urdf::ModelInterfaceSharedPtr parse_model(const UrdfInput &input) {
     return model;
 }
 
+// urdfdom skips a <collision> it cannot read (it only logs it): say which.
+void check_collisions_kept(const urdf::Link &link, const std::vector<std::string> &kinds, const std::string &source) {
+    if (link.collision_array.size() == kinds.size()) return;
+    for (size_t c = 0; c < kinds.size(); ++c) {
+        const std::string &kind = kinds[c];
+        if (kind != "box" && kind != "sphere" && kind != "cylinder" && kind != "mesh")
+            throw ApiError(OPX_ERROR_UNSUPPORTED, source + ": link '" + link.name + "' collision " + std::to_string(c) +
+                                                      ": geometry <" + kind + "> is not supported (box, sphere, cylinder, mesh)");
+    }
+    throw_corrupt(source + ": link '" + link.name + "': urdfdom could not read one of its <collision> elements (its reason is on stderr)");
+}
+
 void add_links(const urdf::ModelInterface &model, const UrdfOutline &outline, const UrdfInput &input,
                LinkSet &links) {
     ShapeBuilder shapes(input);
-    for (const std::string &name : outline.links) {
+    for (size_t l = 0; l < outline.links.size(); ++l) {
+        const std::string &name = outline.links[l];
         const uint32_t index = links.add_link(name);
         const urdf::LinkConstSharedPtr link = model.getLink(name);
         if (!link) throw_corrupt(input.source + ": link '" + name + "' was not parsed");
+        check_collisions_kept(*link, outline.collision_geometry[l], input.source);
         for (size_t c = 0; c < link->collision_array.size(); ++c) {
             const std::string where = input.source + ": link '" + name + "' collision " + std::to_string(c);
             links.add_shape(index, shapes.build(*link->collision_array[c], where));

@@ -65,6 +65,17 @@ std::vector<std::string> child_names(const TiXmlElement *root, const char *tag, 
     return names;
 }
 
+std::vector<std::string> collision_geometry(const TiXmlElement *link) {
+    std::vector<std::string> kinds;
+    for (const TiXmlElement *c = link->FirstChildElement("collision"); c != nullptr;
+         c = c->NextSiblingElement("collision")) {
+        const TiXmlElement *geometry = c->FirstChildElement("geometry");
+        const TiXmlElement *shape = geometry == nullptr ? nullptr : geometry->FirstChildElement();
+        kinds.push_back(shape == nullptr ? std::string() : std::string(shape->Value()));
+    }
+    return kinds;
+}
+
 }  // namespace
 
 UrdfOutline read_urdf_outline(const std::string &xml, const std::string &source) {
@@ -74,6 +85,8 @@ UrdfOutline read_urdf_outline(const std::string &xml, const std::string &source)
     UrdfOutline outline;
     outline.links = child_names(robot, "link", source);
     outline.joints = child_names(robot, "joint", source);
+    for (const TiXmlElement *l = robot->FirstChildElement("link"); l != nullptr; l = l->NextSiblingElement("link"))
+        outline.collision_geometry.push_back(collision_geometry(l));
     const std::set<std::string> links(outline.links.begin(), outline.links.end());
     const std::set<std::string> joints(outline.joints.begin(), outline.joints.end());
     if (links.size() != outline.links.size()) fail(source, "two links have the same name");

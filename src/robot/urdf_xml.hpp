@@ -12,6 +12,9 @@ namespace octoprox {
 struct UrdfOutline {
     std::vector<std::string> links;   // names, in file order
     std::vector<std::string> joints;  // names, in file order
+    // Per link: the element name inside each <collision><geometry>, in
+    // order ("" when there is none), to catch what urdfdom drops silently.
+    std::vector<std::vector<std::string>> collision_geometry;
 };
 
 // Parses `xml` with tinyxml and checks what urdfdom would reject silently:

@@ -76,6 +76,10 @@ INIT_TESTS(opx_cell_info, opx_cell_info_init, OPX_CELL_INFO_INIT, "info",
            offsetof(opx_cell_info, center))
 INIT_TESTS(opx_octree_stats, opx_octree_stats_init, OPX_OCTREE_STATS_INIT, "stats",
            offsetof(opx_octree_stats, inner_nodes))
+INIT_TESTS(opx_urdf_options, opx_urdf_options_init, OPX_URDF_OPTIONS_INIT, "options",
+           offsetof(opx_urdf_options, base_dir))
+INIT_TESTS(opx_joint_info, opx_joint_info_init, OPX_JOINT_INFO_INIT, "info",
+           offsetof(opx_joint_info, axis))
 
 /* The documented defaults, value by value (the macros could be wrong too). */
 static void default_values_are_documented_ones(void **state) {
@@ -108,6 +112,12 @@ static void struct_layouts_are_fixed(void **state) {
     assert_int_equal(offsetof(opx_cell_info, depth), 48);
     assert_int_equal(sizeof(opx_octree_stats), 152);
     assert_int_equal(sizeof(opx_leaf), 48);
+    assert_int_equal(sizeof(opx_urdf_options), 40);
+    assert_int_equal(offsetof(opx_urdf_options, package_dirs), 8);
+    assert_int_equal(sizeof(opx_joint_info), 160);
+    assert_int_equal(offsetof(opx_joint_info, axis), 24);
+    assert_int_equal(offsetof(opx_joint_info, origin), 48);
+    assert_int_equal(offsetof(opx_joint_info, lower), 112);
 }
 
 #define INIT_TEST_ENTRIES(FN)                                                                    \
@@ -121,6 +131,8 @@ int main(void) {
         INIT_TEST_ENTRIES(opx_insert_report_init),
         INIT_TEST_ENTRIES(opx_cell_info_init),
         INIT_TEST_ENTRIES(opx_octree_stats_init),
+        INIT_TEST_ENTRIES(opx_urdf_options_init),
+        INIT_TEST_ENTRIES(opx_joint_info_init),
         cmocka_unit_test(default_values_are_documented_ones),
         cmocka_unit_test(struct_layouts_are_fixed),
     };

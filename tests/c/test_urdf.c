@@ -196,6 +196,70 @@ static void shapes_sit_at_their_urdf_origins(void **state) {
     opx_linkset_destroy(robot);
 }
 
+static opx_shape shape_of(const opx_linkset *robot, uint32_t link, uint32_t index) {
+    opx_shape shape = OPX_SHAPE_INIT;
+    assert_ok(opx_linkset_get_shape(robot, link, index, &shape));
+    assert_int_equal(shape.struct_size, sizeof shape);
+    return shape;
+}
+
+static void shapes_are_stored_as_written(void **state) {
+    (void)state;
+    opx_linkset *robot = load_test_robot();
+    opx_shape s = shape_of(robot, L_BASE, 0);
+    assert_int_equal(s.kind, OPX_SHAPE_BOX);
+    assert_true(s.size[0] == 0.4 && s.size[1] == 0.3 && s.size[2] == 0.2);
+    assert_true(s.pose.position[2] == 0.1 && s.pose.orientation[3] == 1.0);
+    s = shape_of(robot, L_ARM, 0);
+    assert_int_equal(s.kind, OPX_SHAPE_CYLINDER);
+    assert_true(s.radius == 0.05 && s.length == 0.5 && s.pose.position[0] == 0.25);
+    assert_near(s.pose.orientation[1], sqrt(0.5), 1e-15); /* rpy 0 pi/2 0 */
+    assert_near(s.pose.orientation[3], sqrt(0.5), 1e-15);
+    s = shape_of(robot, L_ARM, 1);
+    assert_int_equal(s.kind, OPX_SHAPE_SPHERE);
+    assert_true(s.radius == 0.07 && s.pose.position[0] == 0.5);
+    s = shape_of(robot, L_WHEEL, 0);
+    assert_int_equal(s.kind, OPX_SHAPE_CYLINDER);
+    assert_near(s.pose.orientation[0], sin(0.15), 1e-15);
+    assert_null(s.vertices);
+    assert_null(s.indices);
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape", "shape 1",
+                   opx_linkset_get_shape(robot, L_WHEEL, 1, &s));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape", "shape 0",
+                   opx_linkset_get_shape(robot, L_SLIDER, 0, &s));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape", "link 6",
+                   opx_linkset_get_shape(robot, 6, 0, &s));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape", "out_shape",
+                   opx_linkset_get_shape(robot, 0, 0, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape", "links",
+                   opx_linkset_get_shape(NULL, 0, 0, &s));
+    s.struct_size = 0;
+    expect_failure(OPX_ERROR_VERSION, "opx_linkset_get_shape", "out_shape",
+                   opx_linkset_get_shape(robot, 0, 0, &s));
+    opx_linkset_destroy(robot);
+}
+
+/* opx_linkset_get_shape gives back what opx_linkset_add_shape stored. */
+static void get_shape_round_trips_hand_added_shapes(void **state) {
+    (void)state;
+    opx_linkset *robot = new_robot(); /* every kind, see opx_query_test.h */
+    opx_shape s = shape_of(robot, 1, 1);
+    assert_int_equal(s.kind, OPX_SHAPE_CAPSULE);
+    assert_true(s.radius == 0.05 && s.length == 0.2);
+    s = shape_of(robot, 2, 1);
+    assert_int_equal(s.kind, OPX_SHAPE_CONVEX);
+    assert_int_equal(s.vertex_count, 4);
+    assert_memory_equal(s.vertices, TETRA, sizeof TETRA);
+    s = shape_of(robot, 2, 2);
+    assert_int_equal(s.kind, OPX_SHAPE_MESH);
+    assert_int_equal(s.triangle_count, 4);
+    for (size_t t = 0; t < 4; ++t)
+        for (int k = 0; k < 3; ++k) /* the same corners, maybe renumbered */
+            assert_memory_equal(&s.vertices[3 * s.indices[3 * t + k]], &TETRA[3 * TETRA_FACES[3 * t + k]],
+                                3 * sizeof(double));
+    opx_linkset_destroy(robot);
+}
+
 static void clone_copies_the_joint_tree(void **state) {
     (void)state;
     opx_linkset *robot = load_test_robot();
@@ -236,6 +300,60 @@ static void a_link_added_later_keeps_its_pose(void **state) {
     opx_linkset_destroy(robot);
 }
 
+/* Chains a -> b -> c of prismatic joints along x: b mimics a (3 a + 0.5),
+ * c mimics b (2 b + 1); p is planar and f floating: both stay at their
+ * origin whatever their values. */
+static const char CHAIN_URDF[] =
+    "<robot name=\"chain\"><link name=\"l0\"/><link name=\"l1\"/><link name=\"l2\"/><link name=\"l3\"/>"
+    "<link name=\"l4\"/><link name=\"l5\"/>"
+    "<joint name=\"c\" type=\"prismatic\"><parent link=\"l2\"/><child link=\"l3\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/><mimic joint=\"b\" multiplier=\"2\" offset=\"1\"/></joint>"
+    "<joint name=\"a\" type=\"prismatic\"><parent link=\"l0\"/><child link=\"l1\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/></joint>"
+    "<joint name=\"b\" type=\"prismatic\"><parent link=\"l1\"/><child link=\"l2\"/><axis xyz=\"1 0 0\"/>"
+    "<limit lower=\"-9\" upper=\"9\" effort=\"1\" velocity=\"1\"/><mimic joint=\"a\" multiplier=\"3\" offset=\"0.5\"/></joint>"
+    "<joint name=\"p\" type=\"planar\"><parent link=\"l0\"/><child link=\"l4\"/><origin xyz=\"0 1 0\"/></joint>"
+    "<joint name=\"f\" type=\"floating\"><parent link=\"l4\"/><child link=\"l5\"/><origin xyz=\"0 0 1\"/></joint>"
+    "</robot>";
+
+static void mimic_chains_compose_and_planar_floating_stay_put(void **state) {
+    (void)state;
+    opx_linkset *robot = NULL;
+    assert_ok(opx_linkset_load_urdf_string(CHAIN_URDF, NULL, &robot));
+    assert_int_equal(info_of(robot, 3).type, OPX_JOINT_PLANAR);
+    assert_int_equal(info_of(robot, 4).type, OPX_JOINT_FLOATING);
+    const double q[5] = {7.0, 0.1, 7.0, 5.0, 5.0}; /* c, a, b, p, f */
+    assert_ok(opx_linkset_set_joint_positions(robot, q, 5, NULL));
+    double positions[5];
+    size_t count = 0;
+    assert_ok(opx_linkset_get_joint_positions(robot, positions, 5, &count));
+    assert_near(positions[1], 0.1, 1e-15);
+    assert_near(positions[2], 0.8, 1e-15);        /* 3 * 0.1 + 0.5 */
+    assert_near(positions[0], 2.6, 1e-15);        /* 2 * 0.8 + 1 */
+    assert_true(positions[3] == 0.0 && positions[4] == 0.0);
+    assert_near(get_pose(robot, 3).position[0], 0.1 + 0.8 + 2.6, 1e-14);
+    const opx_pose l5 = get_pose(robot, 5);
+    assert_true(l5.position[0] == 0.0 && l5.position[1] == 1.0 && l5.position[2] == 1.0);
+    opx_linkset_destroy(robot);
+}
+
+/* One link and no joint: FK has no values but still places the root. */
+static void a_single_link_robot_follows_its_base_pose(void **state) {
+    (void)state;
+    opx_linkset *robot = NULL;
+    assert_ok(opx_linkset_load_urdf_string("<robot name=\"r\"><link name=\"only\"><collision><geometry>"
+                                           "<sphere radius=\"0.1\"/></geometry></collision></link></robot>",
+                                           NULL, &robot));
+    uint32_t joints = 99;
+    assert_ok(opx_linkset_joint_count(robot, &joints));
+    assert_int_equal(joints, 0);
+    const opx_pose base = pose_at(1.0, -2.0, 0.5);
+    assert_ok(opx_linkset_set_joint_positions(robot, NULL, 0, &base));
+    const opx_pose pose = get_pose(robot, 0);
+    assert_memory_equal(&pose, &base, sizeof pose);
+    opx_linkset_destroy(robot);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(links_shapes_and_joints_come_from_the_file),
@@ -243,8 +361,12 @@ int main(void) {
         cmocka_unit_test(fk_matches_hand_composed_poses),
         cmocka_unit_test(named_positions_change_only_the_named_joints),
         cmocka_unit_test(shapes_sit_at_their_urdf_origins),
+        cmocka_unit_test(shapes_are_stored_as_written),
+        cmocka_unit_test(get_shape_round_trips_hand_added_shapes),
         cmocka_unit_test(clone_copies_the_joint_tree),
         cmocka_unit_test(a_link_added_later_keeps_its_pose),
+        cmocka_unit_test(mimic_chains_compose_and_planar_floating_stay_put),
+        cmocka_unit_test(a_single_link_robot_follows_its_base_pose),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
