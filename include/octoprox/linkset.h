@@ -80,18 +80,18 @@ OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link,
 OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count);
 OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link,
                                            uint32_t *out_count);
-/*
- * Shape `shape` of `link` as it is stored (kind, pose in the link frame and
- * sizes; box size and cylinder/capsule length are full lengths).  Convex
- * and mesh shapes: `vertices` (packed, vertex_stride 0) and, for meshes,
- * `indices` point into the link set and stay valid until it changes or is
- * destroyed; a mesh keeps only the vertices its triangles use.
- */
-OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link, uint32_t shape,
-                                         opx_shape *out_shape);
 /* The link's name; valid until the link set changes or is destroyed. */
 OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link,
                                          const char **out_name);
+/*
+ * Shape `shape` of link `link` as it was added (shape frame at out->pose in
+ * the link frame; a box's full sizes, a cylinder's full length).  For
+ * convex and mesh shapes, vertices and indices point into the link set
+ * (packed; valid until the link set changes or is destroyed); a mesh holds
+ * only the vertices its triangles use.  out->struct_size must be set.
+ */
+OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link, uint32_t shape,
+                                         opx_shape *out_shape);
 /* The first link named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
 OPX_API opx_status opx_linkset_find_link(const opx_linkset *links, const char *name,
                                          uint32_t *out_link);

@@ -108,20 +108,26 @@ ShapeDef read_shape(const opx_shape *in) {
     return def;
 }
 
-// The public form of a stored shape (pointers into the definition).
+// The ABI view of a stored shape; vertices and indices point into def.
 opx_shape shape_to_abi(const ShapeDef &def) {
     opx_shape out = OPX_SHAPE_INIT;
-    out.kind = static_cast<int32_t>(def.kind);
     const Eigen::Quaterniond q(def.local.rotation);
+    out.kind = static_cast<int32_t>(def.kind);
     out.pose = opx_pose{{def.local.translation.x(), def.local.translation.y(), def.local.translation.z()},
                         {q.x(), q.y(), q.z(), q.w()}};
     out.radius = def.radius;
     out.length = 2.0 * def.half_length;
-    for (int i = 0; i < 3; ++i) out.size[i] = 2.0 * def.half_size[i];
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "packed vertices");
-    static_assert(sizeof(std::array<uint32_t, 3>) == 3 * sizeof(uint32_t), "packed indices");
-    if (!def.vertices.empty()) out.vertices = def.vertices.front().data(), out.vertex_count = def.vertices.size();
-    if (!def.triangles.empty()) out.indices = def.triangles.front().data(), out.triangle_count = def.triangles.size();
+    for (int axis = 0; axis < 3; ++axis) out.size[axis] = 2.0 * def.half_size[axis];
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "vertices are packed triples");
+    static_assert(sizeof(std::array<uint32_t, 3>) == 3 * sizeof(uint32_t), "indices are packed triples");
+    if (!def.vertices.empty()) {
+        out.vertices = def.vertices.front().data();
+        out.vertex_count = def.vertices.size();
+    }
+    if (!def.triangles.empty()) {
+        out.indices = def.triangles.front().data();
+        out.triangle_count = def.triangles.size();
+    }
     return out;
 }
 
@@ -189,18 +195,6 @@ OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t li
         require_pointer(links, "links");
         require_pointer(out_count, "out_count");
         *out_count = static_cast<uint32_t>(links->links.link(require_link(links, link)).shapes.size());
-        return OPX_OK;
-    });
-}
-
-OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link, uint32_t shape,
-                                         opx_shape *out_shape) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        const Link &l = links->links.link(require_link(links, link));
-        if (shape >= l.shapes.size())
-            throw_invalid(format("shape %u does not exist (link %u has %zu shapes)", shape, link, l.shapes.size()));
-        write_versioned(out_shape, shape_to_abi(*l.shapes[shape]), "out_shape");
         return OPX_OK;
     });
 }
@@ -287,6 +281,18 @@ OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
         const Eigen::Quaterniond q(pose.rotation);
         *out_pose = opx_pose{{pose.translation.x(), pose.translation.y(), pose.translation.z()},
                              {q.x(), q.y(), q.z(), q.w()}};
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link, uint32_t shape,
+                                         opx_shape *out_shape) {
+    return guard(__func__, [&] {
+        require_pointer(links, "links");
+        const auto &shapes = links->links.link(require_link(links, link)).shapes;
+        if (shape >= shapes.size())
+            throw_invalid(format("shape %u does not exist (link %u has %zu shapes)", shape, link, shapes.size()));
+        write_versioned(out_shape, shape_to_abi(*shapes[shape]), "out_shape");
         return OPX_OK;
     });
 }
