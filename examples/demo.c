@@ -1,158 +1,183 @@
 /*
- * opx-demo: builds occupancy maps of a synthetic room frame (no data files
- * needed) at 5 cm and 2 cm, prints what they hold, probes a few points and
- * saves the 5 cm map as an OctoMap .bt file.
+ * opx-demo: the library's whole story on data it makes itself.  A
+ * synthetic depth frame of a furnished room, seen from a head-height
+ * camera, is ray-cast into an occupancy map; a built-in 7-joint arm
+ * (primitives and two meshes, from a URDF string) plans a straight-line
+ * joint-space path from above the table down into the table's shadow,
+ * space the camera never saw; every waypoint is checked for collision,
+ * distance and unknown-space cost with both engines, timed; a picture
+ * (PNG) shows a slice of the map, the arm at a few waypoints, the cells it
+ * hits and the unknown-space cost boxes of the path, as in the paper's
+ * Fig. 3.  With --real, the same story runs on the real RGB-D frame and
+ * the PR2 of the shared data folder.
  *
- *   opx-demo [--out DIR]     (the .bt file goes to DIR, default ".")
+ *   opx-demo [--out DIR] [--quick] [--real [--data DIR]]
  */
 #define _POSIX_C_SOURCE 200809L
 
-#include <octoprox/octoprox.h>
-
+#include "support/demo_arm.h"
+#include "support/demo_real.h"
+#include "support/demo_story.h"
 #include "support/room_frame.h"
 
+#include <octoprox/octoprox.h>
+#include <octoprox/robot.h>
+
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-#define MAP_FILE_NAME "opx-demo-room-5cm.bt"
+static const char kUsage[] =
+    "usage: opx-demo [--out DIR] [--quick] [--real [--data DIR]]\n"
+    "\n"
+    "  --out DIR    where the picture, the map and the arm's meshes go (default .)\n"
+    "  --quick      a coarse map and fewer waypoints (a smoke test)\n"
+    "  --real       the real RGB-D frame and the PR2 from the shared data folder\n"
+    "  --data DIR   the shared data folder (default $OPX_DATA_DIR, else ../shared/data)\n";
 
-/* Stops the demo with the library's own explanation of a failure. */
-static void check(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    fprintf(stderr, "opx-demo: %s failed: %s (%s)\n", what, opx_status_name(status), opx_last_error());
-    exit(EXIT_FAILURE);
-}
+typedef struct demo_args {
+    const char *out_dir, *data_dir;
+    int quick, real;
+} demo_args;
 
-static double now_ms(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
-static const char *class_name(int32_t cell_class) {
-    switch (cell_class) {
-    case OPX_CELL_FREE: return "free";
-    case OPX_CELL_UNCERTAIN: return "uncertain";
-    case OPX_CELL_OCCUPIED: return "occupied";
-    default: return "unknown";
+static int parse_args(int argc, char **argv, demo_args *a) {
+    int i;
+    const char *env = getenv("OPX_DATA_DIR");
+    a->out_dir = ".";
+    a->data_dir = env != NULL && env[0] != '\0' ? env : OPX_DEFAULT_DATA_DIR;
+    a->quick = a->real = 0;
+    for (i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(kUsage, stdout);
+            exit(EXIT_SUCCESS);
+        } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
+            a->out_dir = argv[++i];
+        } else if (strcmp(argv[i], "--data") == 0 && i + 1 < argc) {
+            a->data_dir = argv[++i];
+        } else if (strcmp(argv[i], "--quick") == 0) {
+            a->quick = 1;
+        } else if (strcmp(argv[i], "--real") == 0) {
+            a->real = 1;
+        } else {
+            fprintf(stderr, "opx-demo: unknown argument '%s'\n%s", argv[i], kUsage);
+            return -1;
+        }
     }
+    return 0;
 }
 
-static void print_header(const room_frame *frame) {
-    const double *p = frame->sensor_position, *q = frame->sensor_orientation;
-    printf("OctoProx %s demo: one synthetic %ux%u depth frame of a furnished room\n",
-           opx_version(), frame->width, frame->height);
-    printf("  sensor pose (map frame)  position (%.2f, %.2f, %.2f) m\n", p[0], p[1], p[2]);
-    printf("                           quaternion xyzw (%.4f, %.4f, %.4f, %.4f)\n", q[0], q[1], q[2], q[3]);
-    printf("  points                   %zu, %zu with a return\n", frame->count, frame->finite_count);
-}
+/* The arm stands behind the table (room_frame.h), facing the camera:
+ * base at x = 2.75 m on the floor, turned 180 degrees about z. */
+static const opx_pose kArmBase = {{2.75, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}};
+/* From raised above the table's far edge to reaching under the table. */
+static const double kStart[DEMO_ARM_JOINTS] = {0.0, -0.3, 0.0, 1.0, 0.0, 0.8, 0.0};
+static const double kGoal[DEMO_ARM_JOINTS] = {0.0, 1.75, 0.0, 0.2, 0.0, -0.3, 1.57};
 
-/* Inserts the frame into a new map of the given resolution; times it. */
-static opx_octree *build_map(const room_frame *frame, double resolution, opx_insert_report *report,
-                             double *insert_ms) {
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    opx_insert_options insert = OPX_INSERT_OPTIONS_INIT;
-    opx_octree *tree = NULL;
-    double start;
-    options.resolution = resolution;
-    check(opx_octree_create(&options, &tree), "opx_octree_create");
-    insert.mode = OPX_INSERT_RAYCAST;
-    memcpy(insert.sensor_pose.position, frame->sensor_position, sizeof insert.sensor_pose.position);
-    memcpy(insert.sensor_pose.orientation, frame->sensor_orientation, sizeof insert.sensor_pose.orientation);
-    start = now_ms();
-    check(opx_octree_insert_points(tree, frame->xyz, frame->count, 0, OPX_SCALAR_FLOAT32, &insert, report),
-          "opx_octree_insert_points");
-    *insert_ms = now_ms() - start;
-    return tree;
-}
+static int is_pedestal(const char *name) { return strcmp(name, "pedestal") == 0; }
 
-static void print_insert(const opx_insert_report *r, double insert_ms) {
-    const unsigned long long skipped = r->points_nonfinite + r->points_out_of_range + r->points_outside_map;
-    printf("  insert time              %.1f ms\n", insert_ms);
-    printf("  points used              %llu\n", (unsigned long long)r->points_used);
-    printf("  points skipped           %llu (no return %llu, beyond max range %llu, outside map %llu)\n",
-           skipped, (unsigned long long)r->points_nonfinite, (unsigned long long)r->points_out_of_range,
-           (unsigned long long)r->points_outside_map);
-    printf("  cells updated            %llu as hit, %llu as miss\n", (unsigned long long)r->cells_hit,
-           (unsigned long long)r->cells_missed);
-}
-
-static void print_stats(const opx_octree *tree) {
-    opx_octree_stats s = OPX_OCTREE_STATS_INIT;
-    unsigned long long leaves;
-    check(opx_octree_get_stats(tree, &s), "opx_octree_get_stats");
-    leaves = s.leaves_occupied + s.leaves_uncertain + s.leaves_free;
-    printf("  leaves occupied          %llu\n", (unsigned long long)s.leaves_occupied);
-    printf("  leaves uncertain         %llu\n", (unsigned long long)s.leaves_uncertain);
-    printf("  leaves free              %llu\n", (unsigned long long)s.leaves_free);
-    if (s.has_occupied) {
-        printf("  occupied bounds          x %.2f .. %.2f, y %.2f .. %.2f, z %.2f .. %.2f m\n",
-               s.occupied_min[0], s.occupied_max[0], s.occupied_min[1], s.occupied_max[1],
-               s.occupied_min[2], s.occupied_max[2]);
+static int load_arm(const char *out_dir, opx_linkset **out) {
+    opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
+    uint32_t pedestal;
+    opx_status status;
+    if (demo_arm_write_meshes(out_dir) != 0) {
+        fprintf(stderr, "opx-demo: cannot write the arm's meshes into %s\n", out_dir);
+        return -1;
     }
-    printf("  memory                   %llu bytes (%.1f bytes per leaf, %llu inner nodes)\n",
-           (unsigned long long)s.memory_bytes, leaves ? (double)s.memory_bytes / (double)leaves : 0.0,
-           (unsigned long long)s.inner_nodes);
-}
-
-static void probe(const opx_octree *tree, const char *label, const double point[3]) {
-    opx_cell_info info = OPX_CELL_INFO_INIT;
-    check(opx_octree_classify(tree, point, &info), "opx_octree_classify");
-    printf("    %-12s (%5.2f, %5.2f, %5.2f)  %-9s  p = %.3f  cell %g cm, depth %u\n", label, point[0],
-           point[1], point[2], class_name(info.cell_class), info.probability, info.size * 100.0, info.depth);
-}
-
-static void print_probes(const opx_octree *tree) {
-    room_landmarks marks;
-    room_frame_landmarks(&marks);
-    printf("  probes (map frame, m):\n");
-    probe(tree, "table top", marks.table_top);
-    probe(tree, "free air", marks.free_air);
-    probe(tree, "behind box", marks.behind_box);
-    probe(tree, "behind wall", marks.behind_wall);
-}
-
-static void save_map(const opx_octree *tree, const char *out_dir) {
-    char path[4096];
-    int n = snprintf(path, sizeof path, "%s/%s", out_dir, MAP_FILE_NAME);
-    if (n < 0 || (size_t)n >= sizeof path) {
-        fprintf(stderr, "opx-demo: output directory name too long\n");
-        exit(EXIT_FAILURE);
+    options.base_dir = out_dir;
+    status = opx_linkset_load_urdf_string(demo_arm_urdf(), &options, out);
+    /* The pedestal is bolted to the floor: it need not be checked. */
+    if (status == OPX_OK) status = opx_linkset_find_link(*out, "pedestal", &pedestal);
+    if (status == OPX_OK) status = opx_linkset_set_link_enabled(*out, pedestal, 0);
+    if (status != OPX_OK) {
+        fprintf(stderr, "opx-demo: loading the arm failed: %s\n", opx_last_error());
+        return -1;
     }
-    check(opx_octree_save_file(tree, path, OPX_FORMAT_BT), "opx_octree_save_file");
-    printf("  saved                    %s (view it with octovis)\n", path);
+    return 0;
 }
 
-static const char *parse_out_dir(int argc, char **argv) {
-    if (argc == 3 && strcmp(argv[1], "--out") == 0) return argv[2];
-    if (argc == 1) return ".";
-    fprintf(stderr, "usage: %s [--out DIR]\n", argv[0]);
-    exit(EXIT_FAILURE);
+static void add_note(picture_input *p, const char *text, double x, double z) {
+    p->notes[p->note_count] = text;
+    p->note_at[p->note_count][0] = x;
+    p->note_at[p->note_count][1] = 0.0;
+    p->note_at[p->note_count][2] = z;
+    ++p->note_count;
+}
+
+/* The view: the vertical plane y = 0 through the camera, the table and the
+ * arm, seen from the side (x to the right, z up). */
+static void side_view(demo_story *s, const room_frame *frame, int quick) {
+    static const double half_fov = 0.4281; /* atan(239.5 / 525): half the vertical field of view */
+    static const double pitch = 10.0 * 3.14159265358979323846 / 180.0;
+    picture_view *v = &s->picture.view;
+    const double below = pitch + half_fov, above = pitch - half_fov;
+    memset(v, 0, sizeof *v);
+    v->origin[1] = 0.005; /* just off the cell faces at y = 0 */
+    v->u[0] = 1.0;
+    v->v[2] = 1.0;
+    v->u_min = -1.1;
+    v->u_max = 5.1;
+    v->v_min = -0.1;
+    v->v_max = 2.9;
+    v->pixels_per_metre = quick ? 140.0 : 160.0;
+    v->title = "OCTOPROX DEMO: SIDE VIEW, SLICE Y = 0 M, ARM PATH THROUGH THE TABLE'S SHADOW";
+    v->u_name = "X";
+    v->v_name = "Z";
+    memcpy(s->picture.sensor, frame->sensor_position, sizeof s->picture.sensor);
+    s->picture.fov_edges[0][0] = cos(below);
+    s->picture.fov_edges[0][2] = -sin(below);
+    s->picture.fov_edges[1][0] = cos(above);
+    s->picture.fov_edges[1][2] = -sin(above);
+    s->picture.fov_edge_count = 2;
+    add_note(&s->picture, "TABLE", 1.45, 0.86);
+    add_note(&s->picture, "TABLE'S SHADOW", 3.75, 0.32);
+    add_note(&s->picture, "WINDOW: NO RETURNS", 4.0, 1.62);
+    add_note(&s->picture, "FLOOR", 1.7, 0.08);
+    add_note(&s->picture, "WALL", 4.72, 0.5);
+}
+
+static int run_room(const demo_args *a) {
+    static char frame_label[160];
+    room_frame frame;
+    demo_story s;
+    size_t j;
+    int status;
+    memset(&s, 0, sizeof s);
+    if (room_frame_generate(1, &frame) != 0 || load_arm(a->out_dir, &s.robot) != 0) return -1;
+    snprintf(frame_label, sizeof frame_label,
+             "synthetic %ux%u depth frame of a furnished room, camera at 1.4 m, %zu points with a return", frame.width,
+             frame.height, frame.finite_count);
+    s.frame_label = frame_label;
+    s.points = frame.xyz;
+    s.point_count = frame.count;
+    memcpy(s.sensor_pose.position, frame.sensor_position, sizeof s.sensor_pose.position);
+    memcpy(s.sensor_pose.orientation, frame.sensor_orientation, sizeof s.sensor_pose.orientation);
+    s.resolution = a->quick ? 0.08 : 0.03;
+    s.robot_label = "built-in 7-joint arm from a URDF string: cylinders, spheres, an OBJ forearm and an STL hand "
+                    "(pedestal at x 2.75 m, not checked)";
+    s.base_pose = kArmBase;
+    s.joint_count = DEMO_ARM_JOINTS;
+    for (j = 0; j < DEMO_ARM_JOINTS; ++j) {
+        s.joint_names[j] = kDemoArmJointNames[j];
+        s.start[j] = kStart[j];
+        s.goal[j] = kGoal[j];
+    }
+    s.waypoint_count = a->quick ? 11 : 41;
+    s.is_body_link = is_pedestal;
+    side_view(&s, &frame, a->quick);
+    s.out_dir = a->out_dir;
+    s.picture_name = "opx-demo.png";
+    s.map_name = "opx-demo-room.bt";
+    printf("OctoProx %s demo: a 7-joint arm, one depth frame, a path into space the camera never saw\n\n", opx_version());
+    status = demo_story_run(&s);
+    opx_linkset_destroy(s.robot);
+    room_frame_free(&frame);
+    return status;
 }
 
 int main(int argc, char **argv) {
-    static const double resolutions[2] = {0.05, 0.02};
-    const char *out_dir = parse_out_dir(argc, argv);
-    room_frame frame;
-    int i;
-    if (room_frame_generate(1, &frame) != 0) {
-        fprintf(stderr, "opx-demo: out of memory\n");
-        return EXIT_FAILURE;
-    }
-    print_header(&frame);
-    for (i = 0; i < 2; ++i) {
-        opx_insert_report report = OPX_INSERT_REPORT_INIT;
-        double insert_ms = 0.0;
-        opx_octree *tree = build_map(&frame, resolutions[i], &report, &insert_ms);
-        printf("\n%g cm map, ray-cast insert\n", resolutions[i] * 100.0);
-        print_insert(&report, insert_ms);
-        print_stats(tree);
-        print_probes(tree);
-        if (i == 0) save_map(tree, out_dir);
-        opx_octree_destroy(tree);
-    }
-    room_frame_free(&frame);
-    return EXIT_SUCCESS;
+    demo_args a;
+    if (parse_args(argc, argv, &a) != 0) return 2;
+    if (a.real) return demo_real_run(a.data_dir, a.out_dir, a.quick) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    return run_room(&a) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -66,4 +66,10 @@ echo "flags: $flags"
 "$cc" -std=c99 -pedantic -Wall -Wextra -Werror "$quickstart" $flags -o "$work/quickstart-pc"
 run_installed "$work/quickstart-pc"
 
-step "OK: quickstart builds and runs against the installed octoprox both ways"
+step "the installed octoprox tool runs (RUNPATH \$ORIGIN/../$libdir, no LD_LIBRARY_PATH)"
+[[ -x $prefix/bin/octoprox ]] || fail "no $prefix/bin/octoprox"
+ldd "$prefix/bin/octoprox" | grep -q "liboctoprox.so.* => $prefix/" \
+    || fail "$prefix/bin/octoprox does not load liboctoprox from $prefix"
+"$prefix/bin/octoprox" --version | grep -q "^octoprox [0-9]" || fail "octoprox --version"
+
+step "OK: quickstart builds and runs against the installed octoprox both ways; the tool runs"

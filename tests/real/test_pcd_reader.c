@@ -1,4 +1,4 @@
-/* real_pcd_reader: the test PCD reader on the real Kinect frame (binary),
+/* real_pcd_reader: the tools' PCD reader on the real Kinect frame (binary),
  * on its LZF original (rejected), and on small files written here. */
 #define _POSIX_C_SOURCE 200809L
 
@@ -151,9 +151,24 @@ static void test_truncated_binary_is_an_error(void **state) {
     assert_non_null(strstr(error, "truncated"));
 }
 
-static void test_double_fields_are_rejected(void **state) {
+static void test_double_fields_are_read(void **state) {
     static const char text[] =
         "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\n"
+        "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2.5 -3\n";
+    char path[64], error[512] = "";
+    pcd_cloud cloud;
+    (void)state;
+    write_temp_file(text, path, sizeof path);
+    assert_int_equal(pcd_read_file(path, &cloud, error, sizeof error), 0);
+    unlink(path);
+    assert_int_equal(cloud.count, 1);
+    assert_true(cloud.xyz[0] == 1.0f && cloud.xyz[1] == 2.5f && cloud.xyz[2] == -3.0f);
+    pcd_free(&cloud);
+}
+
+static void test_integer_fields_are_rejected(void **state) {
+    static const char text[] =
+        "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\n"
         "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n";
     char path[64], error[512] = "";
     pcd_cloud cloud;
@@ -161,7 +176,7 @@ static void test_double_fields_are_rejected(void **state) {
     write_temp_file(text, path, sizeof path);
     assert_int_equal(pcd_read_file(path, &cloud, error, sizeof error), -1);
     unlink(path);
-    assert_non_null(strstr(error, "float32"));
+    assert_non_null(strstr(error, "float32 or float64"));
 }
 
 static void test_missing_file_is_an_error(void **state) {
@@ -178,7 +193,8 @@ int main(void) {
         cmocka_unit_test(test_compressed_original_is_rejected),
         cmocka_unit_test(test_small_ascii_file),
         cmocka_unit_test(test_truncated_binary_is_an_error),
-        cmocka_unit_test(test_double_fields_are_rejected),
+        cmocka_unit_test(test_double_fields_are_read),
+        cmocka_unit_test(test_integer_fields_are_rejected),
         cmocka_unit_test(test_missing_file_is_an_error),
     };
     require_data_file(FRAME_STEM "_binary.pcd", g_binary_path, sizeof g_binary_path);

@@ -27,6 +27,7 @@ typedef struct pcd_layout {
     size_t point_bytes;   /* binary: bytes of one point */
     size_t point_values;  /* ascii: numbers per point */
     size_t byte_offset[3];
+    size_t byte_size[3];  /* 4: float32, 8: float64 */
     size_t value_index[3];
 } pcd_layout;
 
@@ -130,17 +131,24 @@ static int compute_layout(const pcd_header *h, pcd_layout *layout, char *error, 
             set_error(error, error_size, "no field \"%s\" in FIELDS", axes[axis]);
             return -1;
         }
-        if (h->types[f] != 'F' || h->sizes[f] != 4 || h->counts[f] != 1) {
+        if (h->types[f] != 'F' || (h->sizes[f] != 4 && h->sizes[f] != 8) || h->counts[f] != 1) {
             set_error(error, error_size, "field \"%s\" is TYPE %c SIZE %d COUNT %d; only float32 "
-                      "(F 4 1) is supported", axes[axis], h->types[f], h->sizes[f], h->counts[f]);
+                      "or float64 (F 4 1, F 8 1) is supported", axes[axis], h->types[f], h->sizes[f],
+                      h->counts[f]);
             return -1;
         }
     }
     memset(layout, 0, sizeof *layout);
     for (i = 0; i < h->field_count; ++i) {
+        if (h->sizes[i] <= 0 || h->sizes[i] > 8 || h->counts[i] <= 0 || h->counts[i] > 1 << 16) {
+            set_error(error, error_size, "field \"%s\" has SIZE %d COUNT %d; sizes are 1..8 bytes",
+                      h->names[i], h->sizes[i], h->counts[i]);
+            return -1;
+        }
         for (axis = 0; axis < 3; ++axis) {
             if (strcmp(h->names[i], axes[axis]) == 0) {
                 layout->byte_offset[axis] = layout->point_bytes;
+                layout->byte_size[axis] = (size_t)h->sizes[i];
                 layout->value_index[axis] = layout->point_values;
             }
         }
@@ -177,11 +185,26 @@ static int read_binary_points(FILE *file, const pcd_layout *layout, pcd_cloud *c
             free(record);
             return -1;
         }
-        for (axis = 0; axis < 3; ++axis)
-            memcpy(&cloud->xyz[3 * i + axis], record + layout->byte_offset[axis], sizeof(float));
+        for (axis = 0; axis < 3; ++axis) {
+            const unsigned char *value = record + layout->byte_offset[axis];
+            if (layout->byte_size[axis] == sizeof(double)) {
+                double d;
+                memcpy(&d, value, sizeof d);
+                cloud->xyz[3 * i + axis] = (float)d;
+            } else {
+                memcpy(&cloud->xyz[3 * i + axis], value, sizeof(float));
+            }
+        }
     }
     free(record);
     return 0;
+}
+
+/* A whole word as a float ("nan" and "inf" included); -1 when it is not one. */
+static int parse_float(const char *word, float *out) {
+    char *end = NULL;
+    *out = strtof(word, &end);
+    return end == word || *end != '\0' ? -1 : 0;
 }
 
 static int read_ascii_points(FILE *file, const pcd_layout *layout, pcd_cloud *cloud,
@@ -196,7 +219,10 @@ static int read_ascii_points(FILE *file, const pcd_layout *layout, pcd_cloud *cl
                 return -1;
             }
             for (axis = 0; axis < 3; ++axis)
-                if (layout->value_index[axis] == v) cloud->xyz[3 * i + axis] = strtof(word, NULL);
+                if (layout->value_index[axis] == v && parse_float(word, &cloud->xyz[3 * i + axis]) != 0) {
+                    set_error(error, error_size, "ascii value \"%s\" of point %zu is not a number", word, i);
+                    return -1;
+                }
         }
     }
     return 0;

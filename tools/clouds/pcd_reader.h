@@ -1,14 +1,15 @@
 /*
  * A small reader of PCD v0.7 point clouds (Point Cloud Library format) for
- * tests, examples and benchmarks.  C99, no dependencies.
+ * the octoprox tool, tests and benchmarks.  C99, no dependencies.
  *
- * Supported: DATA ascii and DATA binary, with fields x, y and z stored as
- * float32 (TYPE F, SIZE 4, COUNT 1); any other fields (rgb, rgba, normals,
- * intensity...) are skipped.  DATA binary_compressed (LZF) is rejected with
+ * Supported: DATA ascii and DATA binary (little-endian, as PCL writes it),
+ * with fields x, y and z stored as float32 or float64 (TYPE F, SIZE 4 or 8,
+ * COUNT 1; float64 values are rounded to float32); any other fields (rgb,
+ * rgba, normals, intensity...) are skipped.  DATA binary_compressed (LZF) is rejected with
  * a clear message: convert the file to binary first (pcl_convert_pcd_ascii_binary).
  */
-#ifndef OPX_TESTS_PCD_READER_H
-#define OPX_TESTS_PCD_READER_H
+#ifndef OPX_CLOUDS_PCD_READER_H
+#define OPX_CLOUDS_PCD_READER_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -41,4 +42,4 @@ void pcd_free(pcd_cloud *cloud);
 }
 #endif
 
-#endif /* OPX_TESTS_PCD_READER_H */
+#endif /* OPX_CLOUDS_PCD_READER_H */

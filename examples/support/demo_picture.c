@@ -1,0 +1,257 @@
+/* The demo's picture: see demo_picture.h. */
+#include "demo_picture.h"
+
+#include "canvas.h"
+#include "png_writer.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MARGIN_LEFT 56
+#define MARGIN_TOP 44
+#define MARGIN_RIGHT 80
+#define LEGEND_HEIGHT 140
+
+static const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
+static const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {255, 140, 0};
+static const colour kText = {20, 20, 20}, kSensor = {0, 120, 200}, kBody = {90, 90, 100};
+static const colour kArmColours[PICTURE_MAX_ARMS] = {{30, 150, 70}, {40, 140, 140}, {50, 100, 200}, {120, 70, 190},
+                                                     {170, 60, 160}, {110, 110, 40}, {60, 60, 60}, {0, 0, 0}};
+
+typedef struct frame {
+    canvas c;
+    const picture_view *view;
+    int plot_w, plot_h;
+} frame;
+
+static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Map point -> pixel (x right along u, y down along -v). */
+static void to_pixel(const frame *f, const double p[3], double out[2]) {
+    const double d[3] = {p[0] - f->view->origin[0], p[1] - f->view->origin[1], p[2] - f->view->origin[2]};
+    out[0] = MARGIN_LEFT + (dot(d, f->view->u) - f->view->u_min) * f->view->pixels_per_metre;
+    out[1] = MARGIN_TOP + (f->view->v_max - dot(d, f->view->v)) * f->view->pixels_per_metre;
+}
+
+static colour class_colour(int32_t cell_class) {
+    switch (cell_class) {
+    case OPX_CELL_OCCUPIED: return kOccupied;
+    case OPX_CELL_FREE: return kFree;
+    case OPX_CELL_UNCERTAIN: return kUncertain;
+    default: return kUnknown;
+    }
+}
+
+static void draw_slice(frame *f, const opx_octree *map) {
+    const picture_view *v = f->view;
+    int x, y, axis;
+    for (y = 0; y < f->plot_h; ++y)
+        for (x = 0; x < f->plot_w; ++x) {
+            const double a = v->u_min + (x + 0.5) / v->pixels_per_metre, b = v->v_max - (y + 0.5) / v->pixels_per_metre;
+            double p[3];
+            opx_cell_info cell = OPX_CELL_INFO_INIT;
+            for (axis = 0; axis < 3; ++axis) p[axis] = v->origin[axis] + a * v->u[axis] + b * v->v[axis];
+            if (opx_octree_classify(map, p, &cell) != OPX_OK) cell.cell_class = OPX_CELL_UNKNOWN;
+            canvas_pixel(&f->c, MARGIN_LEFT + x, MARGIN_TOP + y, class_colour(cell.cell_class), 1.0);
+        }
+}
+
+/* The pixel rectangle of an axis-aligned map box, projected. */
+static void box_rect(const frame *f, const double lo[3], const double hi[3], int r[4]) {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    int i;
+    for (i = 0; i < 8; ++i) {
+        const double corner[3] = {i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]};
+        double px[2];
+        to_pixel(f, corner, px);
+        x0 = fmin(x0, px[0]);
+        x1 = fmax(x1, px[0]);
+        y0 = fmin(y0, px[1]);
+        y1 = fmax(y1, px[1]);
+    }
+    r[0] = (int)floor(x0 + 0.5);
+    r[1] = (int)floor(y0 + 0.5);
+    r[2] = (int)floor(x1 - 0.5);
+    r[3] = (int)floor(y1 - 0.5);
+}
+
+static void draw_cost_boxes(frame *f, const picture_input *in) {
+    size_t i;
+    for (i = 0; i < in->cost_box_count; ++i) {
+        int r[4];
+        box_rect(f, in->cost_boxes[i].min, in->cost_boxes[i].max, r);
+        canvas_fill_rect(&f->c, r[0], r[1], r[2], r[3], kCost, 0.35);
+        canvas_rect_outline(&f->c, r[0], r[1], r[2], r[3], kCost, 2);
+    }
+}
+
+/* A silhouette: every triangle into a mask, then one tint and an outline. */
+static void draw_arm(frame *f, const mesh_out *arm, colour col, int collides) {
+    const size_t n = (size_t)f->c.width * f->c.height;
+    unsigned char *mask = calloc(n, 1);
+    canvas m = {f->c.width, f->c.height, NULL};
+    size_t t, i;
+    if (mask == NULL || canvas_create(&m, f->c.width, f->c.height) != 0) {
+        free(mask);
+        return;
+    }
+    for (t = 0; t < arm->face_count; ++t) {
+        const uint32_t *face = &arm->faces[4 * t];
+        double p[3][2];
+        int k;
+        for (k = 0; k < 3; ++k) {
+            const float *v = &arm->vertices[3 * face[k]];
+            const double q[3] = {v[0], v[1], v[2]};
+            to_pixel(f, q, p[k]);
+        }
+        canvas_fill_triangle(&m, p[0], p[1], p[2], kText, 1.0);
+    }
+    for (i = 0; i < n; ++i) mask[i] = m.rgb[3 * i] < 128;
+    for (i = 0; i < n; ++i) {
+        const int x = (int)(i % f->c.width), y = (int)(i / f->c.width);
+        int edge;
+        if (!mask[i]) continue;
+        edge = x == 0 || y == 0 || x + 1 == (int)f->c.width || y + 1 == (int)f->c.height || !mask[i - 1] ||
+               !mask[i + 1] || !mask[i - f->c.width] || !mask[i + f->c.width];
+        if (edge) canvas_fill_rect(&f->c, x, y, x + (collides ? 1 : 0), y + (collides ? 1 : 0), collides ? kCollision : col, 1.0);
+        else canvas_pixel(&f->c, x, y, col, 0.30);
+    }
+    canvas_free(&m);
+    free(mask);
+}
+
+static void draw_collisions(frame *f, const picture_input *in) {
+    size_t i;
+    for (i = 0; i < in->colliding_count; ++i) {
+        const double *c = &in->colliding_centers[3 * i], h = 0.5 * in->colliding_sizes[i];
+        const double lo[3] = {c[0] - h, c[1] - h, c[2] - h}, hi[3] = {c[0] + h, c[1] + h, c[2] + h};
+        int r[4];
+        box_rect(f, lo, hi, r);
+        canvas_fill_rect(&f->c, r[0], r[1], r[2], r[3], kCollision, 1.0);
+    }
+}
+
+static void draw_sensor(frame *f, const picture_input *in) {
+    double s[2];
+    int i;
+    to_pixel(f, in->sensor, s);
+    for (i = 0; i < in->fov_edge_count; ++i) {
+        const double *d = in->fov_edges[i];
+        const double far[3] = {in->sensor[0] + 30 * d[0], in->sensor[1] + 30 * d[1], in->sensor[2] + 30 * d[2]};
+        double e[2], t;
+        to_pixel(f, far, e);
+        /* Clip the ray to the plot so it does not run over the margins. */
+        for (t = 0.0; t <= 1.0; t += 0.0005) {
+            const double x = s[0] + t * (e[0] - s[0]), y = s[1] + t * (e[1] - s[1]);
+            if (x < MARGIN_LEFT || y < MARGIN_TOP || x >= MARGIN_LEFT + f->plot_w || y >= MARGIN_TOP + f->plot_h) break;
+            if (fmod(t * 3000.0, 20.0) < 12.0) canvas_fill_rect(&f->c, (int)x, (int)y, (int)x + 1, (int)y + 1, kSensor, 1.0);
+        }
+    }
+    canvas_fill_rect(&f->c, (int)s[0] - 7, (int)s[1] - 5, (int)s[0] + 7, (int)s[1] + 5, kSensor, 1.0);
+    canvas_text(&f->c, (int)s[0] - 20, (int)s[1] - 22, "CAMERA", kSensor, 2);
+}
+
+static void draw_axes(frame *f) {
+    const picture_view *v = f->view;
+    const int x0 = MARGIN_LEFT, y0 = MARGIN_TOP, x1 = MARGIN_LEFT + f->plot_w, y1 = MARGIN_TOP + f->plot_h;
+    double m;
+    char label[32];
+    canvas_rect_outline(&f->c, x0 - 1, y0 - 1, x1, y1, kText, 1);
+    for (m = ceil(v->u_min); m <= v->u_max; m += 1.0) {
+        const int x = x0 + (int)floor((m - v->u_min) * v->pixels_per_metre + 0.5);
+        canvas_fill_rect(&f->c, x, y1, x, y1 + 5, kText, 1.0);
+        snprintf(label, sizeof label, "%g", m + 0.0); /* + 0.0: no "-0" */
+        canvas_text(&f->c, x - canvas_text_width(label, 2) / 2, y1 + 8, label, kText, 2);
+    }
+    for (m = ceil(v->v_min); m <= v->v_max; m += 1.0) {
+        const int y = y0 + (int)floor((v->v_max - m) * v->pixels_per_metre + 0.5);
+        canvas_fill_rect(&f->c, x0 - 6, y, x0 - 1, y, kText, 1.0);
+        snprintf(label, sizeof label, "%g", m + 0.0);
+        canvas_text(&f->c, x0 - 10 - canvas_text_width(label, 2), y - 7, label, kText, 2);
+    }
+    snprintf(label, sizeof label, "%s (M)", v->u_name);
+    canvas_text(&f->c, x1 + 10, y1 - 7, label, kText, 2);
+    snprintf(label, sizeof label, "%s (M)", v->v_name);
+    canvas_text(&f->c, 4, y0 - 18, label, kText, 2);
+}
+
+/* One legend entry: a swatch and a label; returns the next x. */
+static int legend_entry(frame *f, int x, int y, colour fill, double alpha, colour edge, const char *label) {
+    canvas_fill_rect(&f->c, x, y, x + 22, y + 14, fill, alpha);
+    canvas_rect_outline(&f->c, x, y, x + 22, y + 14, edge, 2);
+    return x + 30 + canvas_text(&f->c, x + 30, y, label, kText, 2) + 24;
+}
+
+static void draw_legend(frame *f, const picture_input *in) {
+    int x = MARGIN_LEFT, y = MARGIN_TOP + f->plot_h + 32, i;
+    char label[96];
+    x = legend_entry(f, x, y, kOccupied, 1.0, kOccupied, "OCCUPIED");
+    x = legend_entry(f, x, y, kFree, 1.0, kText, "FREE");
+    x = legend_entry(f, x, y, kUnknown, 1.0, kUnknown, "UNKNOWN (NEVER SEEN)");
+    legend_entry(f, x, y, kCollision, 1.0, kCollision, "CELLS THE ARM HITS");
+    y += 24;
+    snprintf(label, sizeof label, "UNKNOWN SPACE THE PATH SWEEPS: COSTLIEST BOXES (TOTAL %.3g M^3)", in->total_cost);
+    legend_entry(f, MARGIN_LEFT, y, kCost, 0.35, kCost, label);
+    x = MARGIN_LEFT;
+    y += 24;
+    for (i = 0; i < in->arm_count; ++i)
+        x = legend_entry(f, x, y, kArmColours[i], 0.3, in->arm_collides[i] ? kCollision : kArmColours[i], in->arm_labels[i]);
+    y += 24;
+    canvas_text(&f->c, MARGIN_LEFT, y, "ROBOT OUTLINED RED: THAT WAYPOINT COLLIDES.  DOTTED BLUE: CAMERA FIELD OF VIEW.", kText, 2);
+}
+
+static void draw_notes(frame *f, const picture_input *in) {
+    int i;
+    for (i = 0; i < in->note_count; ++i) {
+        double p[2];
+        const int w = canvas_text_width(in->notes[i], 2);
+        int x, y;
+        to_pixel(f, in->note_at[i], p);
+        x = (int)p[0] - w / 2;
+        y = (int)p[1] - 7;
+        canvas_fill_rect(&f->c, x - 3, y - 3, x + w + 1, y + 16, kFree, 0.75);
+        canvas_text(&f->c, x, y, in->notes[i], kText, 2);
+    }
+}
+
+static void draw_scale_bar(frame *f) {
+    const int len = (int)floor(f->view->pixels_per_metre + 0.5);
+    const int x = MARGIN_LEFT + 24, y = MARGIN_TOP + 16;
+    canvas_fill_rect(&f->c, x - 8, y - 6, x + len + 8, y + 28, kFree, 0.85);
+    canvas_fill_rect(&f->c, x, y, x + len, y + 5, kText, 1.0);
+    canvas_fill_rect(&f->c, x, y - 4, x + 1, y + 9, kText, 1.0);
+    canvas_fill_rect(&f->c, x + len - 1, y - 4, x + len, y + 9, kText, 1.0);
+    canvas_text(&f->c, x + len / 2 - canvas_text_width("1 M", 2) / 2, y + 10, "1 M", kText, 2);
+}
+
+int demo_picture_write(const picture_input *in, const char *path) {
+    frame f;
+    int i, status;
+    f.view = &in->view;
+    f.plot_w = (int)ceil((in->view.u_max - in->view.u_min) * in->view.pixels_per_metre);
+    f.plot_h = (int)ceil((in->view.v_max - in->view.v_min) * in->view.pixels_per_metre);
+    if (canvas_create(&f.c, (uint32_t)(MARGIN_LEFT + f.plot_w + MARGIN_RIGHT),
+                      (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT)) != 0)
+        return -1;
+    draw_slice(&f, in->map);
+    draw_cost_boxes(&f, in);
+    if (in->body != NULL) draw_arm(&f, in->body, kBody, 0);
+    for (i = 0; i < in->arm_count; ++i) draw_arm(&f, in->arms[i], kArmColours[i], in->arm_collides[i]);
+    draw_collisions(&f, in);
+    draw_sensor(&f, in);
+    draw_notes(&f, in);
+    /* Margins are painted last so nothing drawn in map space spills over. */
+    canvas_fill_rect(&f.c, 0, 0, (int)f.c.width - 1, MARGIN_TOP - 2, kFree, 1.0);
+    canvas_fill_rect(&f.c, 0, MARGIN_TOP + f.plot_h + 1, (int)f.c.width - 1, (int)f.c.height - 1, kFree, 1.0);
+    canvas_fill_rect(&f.c, 0, 0, MARGIN_LEFT - 2, (int)f.c.height - 1, kFree, 1.0);
+    canvas_fill_rect(&f.c, MARGIN_LEFT + f.plot_w + 1, 0, (int)f.c.width - 1, (int)f.c.height - 1, kFree, 1.0);
+    canvas_text(&f.c, MARGIN_LEFT + 80, 12, in->view.title, kText, 2);
+    draw_axes(&f);
+    draw_scale_bar(&f);
+    draw_legend(&f, in);
+    status = png_write_rgb(path, f.c.rgb, f.c.width, f.c.height);
+    canvas_free(&f.c);
+    return status;
+}

@@ -1,0 +1,160 @@
+/*
+ * The demo on real data: see demo_real.h.  The real Kinect-class frame
+ * (rgbd/, 640x480, optical frame) is placed as if the PR2's head camera
+ * (link wide_stereo_optical_frame, head tilted down 0.82 rad, which puts
+ * the frame's large flat surface level) had taken it;
+ * the PR2 stands at the map origin; its right arm moves on a straight
+ * joint-space line from MoveIt's "tuck_right_arm" state to reaching
+ * forward into the scene.  Only the right arm's links are checked:
+ * the rest of the robot stands still and the camera does not see it.
+ */
+#include "demo_real.h"
+
+#include "demo_story.h"
+#include "pcd_reader.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define FRAME_FILE "rgbd/frame_20121214T142255.814212_binary.pcd"
+#define URDF_FILE "robots/pr2_description/urdf/robot.xml"
+#define CAMERA_LINK "wide_stereo_optical_frame"
+#define HEAD_TILT 0.82
+
+static const char *const kArmJoints[7] = {"r_shoulder_pan_joint", "r_shoulder_lift_joint", "r_upper_arm_roll_joint",
+                                          "r_elbow_flex_joint",   "r_forearm_roll_joint",  "r_wrist_flex_joint",
+                                          "r_wrist_roll_joint"};
+/* MoveIt's pr2.srdf "tuck_right_arm", then the arm stretched forward. */
+static const double kTucked[7] = {-0.023593, 1.10728, -1.55669, -2.12441, -1.4175, -1.8417, 0.21436};
+static const double kReach[7] = {-0.1, 0.1, 0.0, -0.35, 0.0, -0.4, 0.0};
+
+/* The right arm: shoulder to gripper (not r_torso_lift_side_plate_link). */
+static int is_arm_link(const char *name) {
+    static const char *const prefixes[6] = {"r_shoulder", "r_upper_arm", "r_elbow", "r_forearm", "r_wrist", "r_gripper"};
+    int i;
+    for (i = 0; i < 6; ++i)
+        if (strncmp(name, prefixes[i], strlen(prefixes[i])) == 0) return 1;
+    return 0;
+}
+
+static int is_body_link(const char *name) { return !is_arm_link(name); }
+
+static int require_file(const char *path) {
+    struct stat info;
+    if (stat(path, &info) == 0) return 0;
+    fprintf(stderr, "opx-demo --real: %s not found; set OPX_DATA_DIR (or --data) to the shared data folder\n", path);
+    return -1;
+}
+
+static int load_pr2(const char *data_dir, opx_linkset **out) {
+    char urdf[4096], package[4200];
+    const char *dirs[1] = {package};
+    opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
+    snprintf(urdf, sizeof urdf, "%s/%s", data_dir, URDF_FILE);
+    snprintf(package, sizeof package, "moveit_resources_pr2_description=%s/robots/pr2_description", data_dir);
+    if (require_file(urdf) != 0) return -1;
+    options.package_dirs = dirs;
+    options.package_dir_count = 1;
+    if (opx_linkset_load_urdf_file(urdf, &options, out) != OPX_OK) {
+        fprintf(stderr, "opx-demo --real: %s\n", opx_last_error());
+        return -1;
+    }
+    return 0;
+}
+
+/* Tilts the head, reads the camera's pose, and leaves only the arm's links on. */
+static int place_camera_and_links(demo_story *s) {
+    const char *head = "head_tilt_joint";
+    const double tilt = HEAD_TILT;
+    uint32_t camera, links = 0, l;
+    if (opx_linkset_set_named_joint_positions(s->robot, &head, &tilt, 1, &s->base_pose) != OPX_OK ||
+        opx_linkset_find_link(s->robot, CAMERA_LINK, &camera) != OPX_OK ||
+        opx_linkset_get_pose(s->robot, camera, &s->sensor_pose) != OPX_OK || opx_linkset_link_count(s->robot, &links) != OPX_OK) {
+        fprintf(stderr, "opx-demo --real: %s\n", opx_last_error());
+        return -1;
+    }
+    for (l = 0; l < links; ++l) {
+        const char *name = "";
+        opx_linkset_link_name(s->robot, l, &name);
+        opx_linkset_set_link_enabled(s->robot, l, is_arm_link(name));
+    }
+    return 0;
+}
+
+static void rotate(const double q[4], const double v[3], double out[3]) {
+    const double x = q[0], y = q[1], z = q[2], w = q[3];
+    const double cx = y * v[2] - z * v[1], cy = z * v[0] - x * v[2], cz = x * v[1] - y * v[0];
+    out[0] = v[0] + 2.0 * (w * cx + y * cz - z * cy);
+    out[1] = v[1] + 2.0 * (w * cy + z * cx - x * cz);
+    out[2] = v[2] + 2.0 * (w * cz + x * cy - y * cx);
+}
+
+/* Side view through the right shoulder: x forward, z up. */
+static void side_view(demo_story *s, int quick) {
+    static const double top[3] = {0.0, -240.0 / 525.0, 1.0}, bottom[3] = {0.0, 240.0 / 525.0, 1.0};
+    picture_view *v = &s->picture.view;
+    memset(v, 0, sizeof *v);
+    v->origin[1] = -0.188; /* the right shoulder's y */
+    v->u[0] = 1.0;
+    v->v[2] = 1.0;
+    v->u_min = -0.6;
+    v->u_max = 2.4;
+    v->v_min = -0.1;
+    v->v_max = 1.9;
+    v->pixels_per_metre = quick ? 200.0 : 300.0;
+    v->title = "OCTOPROX DEMO --REAL: PR2 RIGHT ARM, REAL RGB-D FRAME, SLICE Y = -0.19 M";
+    v->u_name = "X";
+    v->v_name = "Z";
+    memcpy(s->picture.sensor, s->sensor_pose.position, sizeof s->picture.sensor);
+    rotate(s->sensor_pose.orientation, top, s->picture.fov_edges[0]);
+    rotate(s->sensor_pose.orientation, bottom, s->picture.fov_edges[1]);
+    s->picture.fov_edge_count = 2;
+}
+
+int demo_real_run(const char *data_dir, const char *out_dir, int quick) {
+    static char frame_path[4096], frame_label[300];
+    char error[600];
+    pcd_cloud cloud;
+    demo_story s;
+    size_t j;
+    int status;
+    memset(&s, 0, sizeof s);
+    snprintf(frame_path, sizeof frame_path, "%s/%s", data_dir, FRAME_FILE);
+    if (require_file(frame_path) != 0 || load_pr2(data_dir, &s.robot) != 0) return -1;
+    if (pcd_read_file(frame_path, &cloud, error, sizeof error) != 0) {
+        fprintf(stderr, "opx-demo --real: %s\n", error);
+        opx_linkset_destroy(s.robot);
+        return -1;
+    }
+    s.base_pose = (opx_pose)OPX_POSE_IDENTITY;
+    status = place_camera_and_links(&s);
+    snprintf(frame_label, sizeof frame_label, "real %ux%u RGB-D frame (%s), %zu points with a return, seen from the "
+             "PR2's head camera (%s, head tilted %.1f rad)", cloud.width, cloud.height, FRAME_FILE, cloud.finite_count,
+             CAMERA_LINK, HEAD_TILT);
+    s.frame_label = frame_label;
+    s.points = cloud.xyz;
+    s.point_count = cloud.count;
+    s.resolution = quick ? 0.05 : 0.02;
+    s.robot_label = "PR2 from the shared URDF (95 links, STL meshes); only the right arm (shoulder to gripper) is checked";
+    s.joint_count = 7;
+    for (j = 0; j < 7; ++j) {
+        s.joint_names[j] = kArmJoints[j];
+        s.start[j] = kTucked[j];
+        s.goal[j] = kReach[j];
+    }
+    s.waypoint_count = quick ? 11 : 41;
+    s.is_body_link = is_body_link;
+    side_view(&s, quick);
+    s.out_dir = out_dir;
+    s.picture_name = "opx-demo-real.png";
+    s.map_name = "opx-demo-real.bt";
+    if (status == 0) {
+        printf("OctoProx %s demo --real: the PR2 reaches into a real RGB-D frame\n\n", opx_version());
+        status = demo_story_run(&s);
+    }
+    pcd_free(&cloud);
+    opx_linkset_destroy(s.robot);
+    return status;
+}

@@ -1,0 +1,326 @@
+/* PLY vertex reader: see ply_reader.h. */
+#define _POSIX_C_SOURCE 200809L
+#include "ply_reader.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PLY_MAX_ELEMENTS 16
+#define PLY_MAX_PROPERTIES 64
+#define PLY_LINE_MAX 1024
+
+typedef struct ply_property {
+    char name[64];
+    int type_size;      /* bytes of a scalar, or of a list's items */
+    char type_kind;     /* 'i' signed, 'u' unsigned, 'f' floating */
+    int is_list;
+    int count_size;     /* list: bytes of the item count */
+    char count_kind;
+} ply_property;
+
+typedef struct ply_element {
+    char name[64];
+    long long count;
+    int property_count;
+    ply_property properties[PLY_MAX_PROPERTIES];
+} ply_element;
+
+typedef struct ply_header {
+    int binary;  /* 0 ascii, 1 binary_little_endian */
+    char format[32];
+    int element_count;
+    ply_element elements[PLY_MAX_ELEMENTS];
+} ply_header;
+
+static void set_error(char *error, size_t error_size, const char *format, ...) {
+    va_list args;
+    if (error == NULL || error_size == 0) return;
+    va_start(args, format);
+    vsnprintf(error, error_size, format, args);
+    va_end(args);
+}
+
+/* The size and kind of a PLY scalar type name; 0 when unknown. */
+static int type_of(const char *name, char *kind) {
+    static const struct { const char *name; int size; char kind; } types[] = {
+        {"char", 1, 'i'}, {"int8", 1, 'i'}, {"uchar", 1, 'u'}, {"uint8", 1, 'u'},
+        {"short", 2, 'i'}, {"int16", 2, 'i'}, {"ushort", 2, 'u'}, {"uint16", 2, 'u'},
+        {"int", 4, 'i'}, {"int32", 4, 'i'}, {"uint", 4, 'u'}, {"uint32", 4, 'u'},
+        {"float", 4, 'f'}, {"float32", 4, 'f'}, {"double", 8, 'f'}, {"float64", 8, 'f'},
+    };
+    size_t i;
+    for (i = 0; i < sizeof types / sizeof types[0]; ++i) {
+        if (strcmp(types[i].name, name) == 0) {
+            *kind = types[i].kind;
+            return types[i].size;
+        }
+    }
+    return 0;
+}
+
+static int parse_property(ply_element *e, char *words[], int n, char *error, size_t error_size) {
+    ply_property *p;
+    if (e->property_count == PLY_MAX_PROPERTIES) {
+        set_error(error, error_size, "element \"%s\" has more than %d properties", e->name, PLY_MAX_PROPERTIES);
+        return -1;
+    }
+    p = &e->properties[e->property_count];
+    memset(p, 0, sizeof *p);
+    if (n == 5 && strcmp(words[1], "list") == 0) {
+        p->is_list = 1;
+        p->count_size = type_of(words[2], &p->count_kind);
+        p->type_size = type_of(words[3], &p->type_kind);
+        snprintf(p->name, sizeof p->name, "%s", words[4]);
+        if (p->count_size == 0 || p->count_kind == 'f' || p->type_size == 0) {
+            set_error(error, error_size, "bad list property \"%s %s %s\"", words[2], words[3], words[4]);
+            return -1;
+        }
+    } else if (n == 3) {
+        p->type_size = type_of(words[1], &p->type_kind);
+        snprintf(p->name, sizeof p->name, "%s", words[2]);
+        if (p->type_size == 0) {
+            set_error(error, error_size, "unknown property type \"%s\"", words[1]);
+            return -1;
+        }
+    } else {
+        set_error(error, error_size, "malformed property line");
+        return -1;
+    }
+    ++e->property_count;
+    return 0;
+}
+
+static int split_words(char *line, char *words[], int max_words) {
+    int n = 0;
+    char *save = NULL, *word = strtok_r(line, " \t\r\n", &save);
+    while (word != NULL && n < max_words) {
+        words[n++] = word;
+        word = strtok_r(NULL, " \t\r\n", &save);
+    }
+    return n;
+}
+
+static int parse_element(ply_header *h, char *words[], int n, char *error, size_t error_size) {
+    ply_element *e;
+    char *end = NULL;
+    if (n != 3 || h->element_count == PLY_MAX_ELEMENTS) {
+        set_error(error, error_size, "malformed element line (or more than %d elements)", PLY_MAX_ELEMENTS);
+        return -1;
+    }
+    e = &h->elements[h->element_count++];
+    memset(e, 0, sizeof *e);
+    snprintf(e->name, sizeof e->name, "%s", words[1]);
+    e->count = strtoll(words[2], &end, 10);
+    if (*end != '\0' || e->count < 0 || (unsigned long long)e->count > SIZE_MAX / (3 * sizeof(float))) {
+        set_error(error, error_size, "element \"%s\" has a bad count \"%s\"", e->name, words[2]);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_format(ply_header *h, char *words[], int n, char *error, size_t error_size) {
+    if (n != 3) {
+        set_error(error, error_size, "malformed format line");
+        return -1;
+    }
+    snprintf(h->format, sizeof h->format, "%s", words[1]);
+    if (strcmp(words[1], "ascii") == 0) h->binary = 0;
+    else if (strcmp(words[1], "binary_little_endian") == 0) h->binary = 1;
+    else {
+        set_error(error, error_size, "format \"%s\" is unsupported (ascii and binary_little_endian are)", words[1]);
+        return -1;
+    }
+    return 0;
+}
+
+/* One header line; returns 1 at end_header, 0 to go on, -1 on error. */
+static int apply_header_line(ply_header *h, char *line, char *error, size_t error_size) {
+    char *words[8];
+    const int n = split_words(line, words, 8);
+    if (n == 0 || strcmp(words[0], "comment") == 0 || strcmp(words[0], "obj_info") == 0) return 0;
+    if (strcmp(words[0], "end_header") == 0) return 1;
+    if (strcmp(words[0], "format") == 0) return parse_format(h, words, n, error, error_size);
+    if (strcmp(words[0], "element") == 0) return parse_element(h, words, n, error, error_size);
+    if (strcmp(words[0], "property") == 0) {
+        if (h->element_count == 0) {
+            set_error(error, error_size, "a property comes before any element");
+            return -1;
+        }
+        return parse_property(&h->elements[h->element_count - 1], words, n, error, error_size);
+    }
+    set_error(error, error_size, "unexpected header line starting with \"%s\"", words[0]);
+    return -1;
+}
+
+static int read_header(FILE *file, ply_header *h, char *error, size_t error_size) {
+    char line[PLY_LINE_MAX];
+    int status = 0;
+    memset(h, 0, sizeof *h);
+    if (fgets(line, sizeof line, file) == NULL || strncmp(line, "ply", 3) != 0 ||
+        (line[3] != '\n' && line[3] != '\r')) {
+        set_error(error, error_size, "not a PLY file (the first line is not \"ply\")");
+        return -1;
+    }
+    while (status == 0) {
+        if (fgets(line, sizeof line, file) == NULL) {
+            set_error(error, error_size, "the header ends before end_header");
+            return -1;
+        }
+        status = apply_header_line(h, line, error, error_size);
+    }
+    if (status < 0) return -1;
+    if (h->format[0] == '\0') {
+        set_error(error, error_size, "no format line in the header");
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads one value (binary: `size` bytes of `kind`; ascii: one word). */
+static int read_value(FILE *file, int binary, int size, char kind, double *out) {
+    if (binary) {
+        unsigned char b[8];
+        if (fread(b, 1, (size_t)size, file) != (size_t)size) return -1;
+        if (kind == 'f' && size == 4) { float f; memcpy(&f, b, 4); *out = f; }
+        else if (kind == 'f') { double d; memcpy(&d, b, 8); *out = d; }
+        else if (size == 1) *out = kind == 'i' ? (double)(int8_t)b[0] : (double)b[0];
+        else if (size == 2) { uint16_t u; memcpy(&u, b, 2); *out = kind == 'i' ? (double)(int16_t)u : (double)u; }
+        else { uint32_t u; memcpy(&u, b, 4); *out = kind == 'i' ? (double)(int32_t)u : (double)u; }
+        return 0;
+    }
+    {
+        char word[64], *end = NULL;
+        if (fscanf(file, "%63s", word) != 1) return -1;
+        *out = strtod(word, &end);
+        return end == word || *end != '\0' ? -2 : 0;
+    }
+}
+
+/* Reads one property of one row; *out gets a scalar's value. */
+static int read_property(FILE *file, int binary, const ply_property *p, double *out) {
+    double count, item;
+    long long i;
+    int status;
+    if (!p->is_list) return read_value(file, binary, p->type_size, p->type_kind, out);
+    status = read_value(file, binary, p->count_size, p->count_kind, &count);
+    if (status != 0) return status;
+    if (count < 0 || count > 1e6 || count != floor(count)) return -2;
+    for (i = 0; i < (long long)count; ++i)
+        if ((status = read_value(file, binary, p->type_size, p->type_kind, &item)) != 0) return status;
+    *out = count;
+    return 0;
+}
+
+static int row_error(int status, const ply_element *e, long long row, char *error, size_t error_size) {
+    if (status == -1)
+        set_error(error, error_size, "data truncated in element \"%s\" at row %lld of %lld", e->name, row, e->count);
+    else
+        set_error(error, error_size, "element \"%s\" row %lld holds a value that is not a number", e->name, row);
+    return -1;
+}
+
+static int skip_element(FILE *file, int binary, const ply_element *e, char *error, size_t error_size) {
+    long long row;
+    int k, status;
+    double value;
+    for (row = 0; row < e->count; ++row)
+        for (k = 0; k < e->property_count; ++k)
+            if ((status = read_property(file, binary, &e->properties[k], &value)) != 0)
+                return row_error(status, e, row, error, error_size);
+    return 0;
+}
+
+/* Where x, y and z are among the vertex properties; checks their types. */
+static int find_xyz(const ply_element *e, int where[3], char *error, size_t error_size) {
+    static const char *const axes[3] = {"x", "y", "z"};
+    int axis, k;
+    for (axis = 0; axis < 3; ++axis) {
+        where[axis] = -1;
+        for (k = 0; k < e->property_count; ++k)
+            if (strcmp(e->properties[k].name, axes[axis]) == 0) where[axis] = k;
+        if (where[axis] < 0) {
+            set_error(error, error_size, "the vertex element has no property \"%s\"", axes[axis]);
+            return -1;
+        }
+        if (e->properties[where[axis]].is_list || e->properties[where[axis]].type_kind != 'f') {
+            set_error(error, error_size, "vertex property \"%s\" is not float or double", axes[axis]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int read_vertices(FILE *file, int binary, const ply_element *e, ply_cloud *out,
+                         char *error, size_t error_size) {
+    int where[3], k, axis, status;
+    long long row;
+    if (find_xyz(e, where, error, error_size) != 0) return -1;
+    out->count = (size_t)e->count;
+    out->xyz = malloc(out->count * 3 * sizeof(float) + 1);
+    if (out->xyz == NULL) {
+        set_error(error, error_size, "out of memory for %zu vertices", out->count);
+        return -1;
+    }
+    for (row = 0; row < e->count; ++row) {
+        for (k = 0; k < e->property_count; ++k) {
+            double value = 0.0;
+            if ((status = read_property(file, binary, &e->properties[k], &value)) != 0)
+                return row_error(status, e, row, error, error_size);
+            for (axis = 0; axis < 3; ++axis)
+                if (where[axis] == k) out->xyz[3 * row + axis] = (float)value;
+        }
+    }
+    return 0;
+}
+
+static int read_body(FILE *file, const ply_header *h, ply_cloud *out, char *error, size_t error_size) {
+    int i;
+    snprintf(out->format, sizeof out->format, "%s", h->format);
+    for (i = 0; i < h->element_count; ++i) {
+        const ply_element *e = &h->elements[i];
+        if (strcmp(e->name, "vertex") == 0) return read_vertices(file, h->binary, e, out, error, error_size);
+        if (skip_element(file, h->binary, e, error, error_size) != 0) return -1;
+    }
+    set_error(error, error_size, "no vertex element in the header");
+    return -1;
+}
+
+int ply_read_file(const char *path, ply_cloud *out, char *error, size_t error_size) {
+    char reason[512] = "";
+    ply_header header;
+    FILE *file;
+    int status;
+    size_t i;
+    if (out == NULL || path == NULL) {
+        set_error(error, error_size, "ply_read_file: path and out must not be NULL");
+        return -1;
+    }
+    memset(out, 0, sizeof *out);
+    file = fopen(path, "rb");
+    if (file == NULL) {
+        set_error(error, error_size, "%s: cannot open for reading", path);
+        return -1;
+    }
+    status = read_header(file, &header, reason, sizeof reason);
+    if (status == 0) status = read_body(file, &header, out, reason, sizeof reason);
+    fclose(file);
+    if (status != 0) {
+        set_error(error, error_size, "%s: %s", path, reason);
+        ply_free(out);
+        return -1;
+    }
+    for (i = 0; i < out->count; ++i)
+        if (isfinite(out->xyz[3 * i]) && isfinite(out->xyz[3 * i + 1]) && isfinite(out->xyz[3 * i + 2]))
+            ++out->finite_count;
+    return 0;
+}
+
+void ply_free(ply_cloud *cloud) {
+    if (cloud == NULL) return;
+    free(cloud->xyz);
+    memset(cloud, 0, sizeof *cloud);
+}

@@ -1,0 +1,32 @@
+/* Printing what `octoprox check` found, as text or JSON. */
+#ifndef OPX_TOOLS_CHECK_REPORT_H
+#define OPX_TOOLS_CHECK_REPORT_H
+
+#include "cli.h"
+
+#define CHECK_MAX_LISTED 10 /* contacts and cost boxes listed */
+
+typedef struct check_context {
+    const char *map_path, *urdf_path, *path_file;
+    const opx_octree *map;
+    const opx_linkset *links;
+    opx_query *query;
+    int32_t unknown_policy;
+    int want_distance, want_cost, json;
+} check_context;
+
+const char *check_class_name(int32_t cell_class);
+const char *check_link_name(const opx_linkset *links, uint32_t link);
+
+/* The head of the report (map, robot, policy); JSON: opens the object. */
+void check_print_head(const check_context *c);
+/* Contacts of the last collision query: count, colliding links, a few. */
+void check_print_contacts(const check_context *c, const opx_collision_result *r);
+/* Cost boxes held by the query (after collide or path with cost). */
+void check_print_cost(const check_context *c, double total, uint64_t found, uint64_t held);
+void check_print_distance(const check_context *c, const opx_distance_result *d);
+void check_print_path(const check_context *c, size_t waypoints, const opx_path_result *r);
+/* The tail: the verdict, the time; JSON: closes the object. */
+void check_print_tail(const check_context *c, int collided, double query_ms);
+
+#endif /* OPX_TOOLS_CHECK_REPORT_H */

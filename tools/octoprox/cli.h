@@ -1,0 +1,82 @@
+/*
+ * Shared pieces of the octoprox command-line tool: exit codes, messages,
+ * argument parsing, JSON output and a progress bar.
+ */
+#ifndef OPX_TOOLS_CLI_H
+#define OPX_TOOLS_CLI_H
+
+#include <octoprox/octoprox.h>
+
+#include <stddef.h>
+#include <stdio.h>
+
+/* Exit codes (documented in `octoprox --help` and docs/cli.md). */
+#define CLI_EXIT_OK 0        /* done; for check: no collision */
+#define CLI_EXIT_COLLISION 1 /* check: the robot (or a path waypoint) collides */
+#define CLI_EXIT_USAGE 2     /* bad command line */
+#define CLI_EXIT_INPUT 3     /* a file cannot be read or written, or is malformed */
+#define CLI_EXIT_INTERNAL 4  /* out of memory or a library bug */
+
+/* Prints "octoprox COMMAND: message" on stderr; returns code. */
+int cli_fail(const char *command, int code, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* The exit code of a failed library call; prints what was being done
+ * (a format) and the library's message. */
+int cli_library_fail(const char *command, opx_status status, const char *what_format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* A usage error: the message, then "try 'octoprox COMMAND --help'". */
+int cli_usage(const char *command, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Command-line walking: `--name VALUE`, `--name=VALUE` and flags. */
+typedef struct cli_args {
+    int argc;
+    char **argv;
+    int index;          /* the argument being looked at */
+    const char *value;  /* set by cli_value */
+} cli_args;
+
+/* 1 when argv[index] is exactly `name` (a flag). */
+int cli_flag(const cli_args *args, const char *name);
+/* 1 when argv[index] is `name VALUE` or `name=VALUE`: args->value gets
+ * VALUE and index moves past it.  -1 when the value is missing. */
+int cli_value(cli_args *args, const char *name);
+/* 1 for --help and -h. */
+int cli_is_help(const char *arg);
+
+/* Numbers and poses; 0 on success, -1 when malformed or not finite. */
+int cli_parse_double(const char *text, double *out);
+/* "x,y,z" or "x,y,z,qx,qy,qz,qw" (metres, quaternion in ROS order). */
+int cli_parse_pose(const char *text, opx_pose *out);
+
+/* JSON: a quoted, escaped string, and an [x, y, z] array. */
+void json_string(FILE *out, const char *text);
+void json_vec3(FILE *out, const double v[3]);
+/* A number; non-finite values print as null (JSON has no infinity). */
+void json_number(FILE *out, double value);
+
+/* A progress bar on stderr, drawn only when stderr is a terminal. */
+typedef struct cli_progress {
+    int enabled;
+    const char *label;
+    size_t total;
+    int last_percent;
+} cli_progress;
+
+void cli_progress_start(cli_progress *p, const char *label, size_t total);
+void cli_progress_update(cli_progress *p, size_t done);
+void cli_progress_finish(cli_progress *p);
+
+/* Milliseconds on a monotonic clock. */
+double cli_now_ms(void);
+
+#endif /* OPX_TOOLS_CLI_H */

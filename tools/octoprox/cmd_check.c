@@ -1,0 +1,204 @@
+/* octoprox check MAP --urdf ...: collision, distance and cost of a robot. */
+#include "check_report.h"
+#include "cli.h"
+#include "commands.h"
+#include "path_csv.h"
+#include "robot_args.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static const char kHelp[] =
+    "usage: octoprox check MAP.bt|MAP.ot --urdf ROBOT.urdf [--package-dir DIR]...\n"
+    "                      [--joints name=value,...] [--base-pose POSE] [--distance]\n"
+    "                      [--cost] [--unknown free|occupied] [--path FILE.csv] [--json]\n"
+    "\n"
+    "Checks one robot configuration (or a path of them) against the map:\n"
+    "collision with the occupied cells (every contact's link is listed), and\n"
+    "optionally the minimum distance and the cost of uncertain and unknown\n"
+    "space the robot overlaps (probability x volume, m^3; paper IV.C).\n"
+    "\n"
+    "options:\n"
+    "  --distance            also the minimum distance to an obstacle (metres)\n"
+    "  --cost                also the cost of uncertain/unknown space\n"
+    "  --unknown free|occupied\n"
+    "                        what never-observed space is (default free)\n"
+    "  --path FILE.csv       check a path: the first line names joints, each\n"
+    "                        further line is one waypoint's values; joints not\n"
+    "                        in the file keep their --joints values\n"
+    "  --json                one JSON object: map, urdf, links, unknown; then\n"
+    "                        contact_count, colliding_links [names], contacts\n"
+    "                        [{link, cell_class, cell_center, cell_size}] (one\n"
+    "                        configuration) or path {file, waypoints,\n"
+    "                        first_colliding_waypoint, min_distance,\n"
+    "                        min_distance_waypoint} (--path); distance {found,\n"
+    "                        distance, link, point_on_link, point_on_cell} with\n"
+    "                        --distance; cost {total, boxes_found, boxes [{link,\n"
+    "                        cell_class, min, max, probability, cost}]} with\n"
+    "                        --cost; collided, query_ms\n"
+    "  -h, --help            this help\n"
+    "\n"
+    "%s"
+    "\n"
+    "exit codes: 0 no collision, 1 collision (some waypoint, with --path),\n"
+    "2 usage error, 3 a file cannot be read or is malformed, 4 internal error\n";
+
+typedef struct check_args {
+    const char *map;
+    robot_args robot;
+    check_context context;
+} check_args;
+
+static int parse_option(cli_args *args, check_args *a) {
+    int got, code;
+    if (robot_args_option(args, &a->robot, "check", &code)) return code;
+    if (cli_flag(args, "--json")) a->context.json = 1;
+    else if (cli_flag(args, "--distance")) a->context.want_distance = 1;
+    else if (cli_flag(args, "--cost")) a->context.want_cost = 1;
+    else if ((got = cli_value(args, "--unknown")) != 0) {
+        if (got > 0 && strcmp(args->value, "free") == 0) a->context.unknown_policy = OPX_UNKNOWN_FREE;
+        else if (got > 0 && strcmp(args->value, "occupied") == 0) a->context.unknown_policy = OPX_UNKNOWN_OCCUPIED;
+        else return cli_usage("check", "--unknown needs 'free' or 'occupied'");
+    } else if ((got = cli_value(args, "--path")) != 0) {
+        if (got < 0) return cli_usage("check", "--path needs a CSV file");
+        a->context.path_file = args->value;
+    } else {
+        return cli_usage("check", "unknown option '%s'", args->argv[args->index]);
+    }
+    return -1;
+}
+
+static int parse_arguments(int argc, char **argv, check_args *a) {
+    cli_args args = {argc, argv, 1, NULL};
+    memset(a, 0, sizeof *a);
+    robot_args_init(&a->robot);
+    for (; args.index < argc; ++args.index) {
+        const char *arg = argv[args.index];
+        int code;
+        if (cli_is_help(arg)) {
+            printf(kHelp, kRobotOptionsHelp);
+            return CLI_EXIT_OK;
+        }
+        if (arg[0] != '-') {
+            if (a->map != NULL) return cli_usage("check", "one map only ('%s' and '%s' given)", a->map, arg);
+            a->map = arg;
+        } else if ((code = parse_option(&args, a)) >= 0) {
+            return code;
+        }
+    }
+    if (a->map == NULL) return cli_usage("check", "no map file given");
+    if (a->robot.urdf == NULL) return cli_usage("check", "no robot given (--urdf ROBOT.urdf)");
+    a->context.map_path = a->map;
+    a->context.urdf_path = a->robot.urdf;
+    return -1;
+}
+
+static int check_one(check_context *c, int *collided) {
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    opx_distance_request distance_request = OPX_DISTANCE_REQUEST_INIT;
+    opx_distance_result distance = OPX_DISTANCE_RESULT_INIT;
+    opx_status status;
+    request.unknown_policy = c->unknown_policy;
+    request.max_contacts = UINT32_MAX; /* every contact: the report names each colliding link */
+    request.compute_cost = c->want_cost;
+    request.max_cost_boxes = CHECK_MAX_LISTED;
+    status = opx_query_collide(c->query, c->map, c->links, &request, &result);
+    if (status != OPX_OK) return cli_library_fail("check", status, "the collision query");
+    *collided = result.collided;
+    check_print_contacts(c, &result);
+    if (c->want_cost) check_print_cost(c, result.total_cost, result.cost_boxes_found, result.cost_box_count);
+    if (!c->want_distance) return -1;
+    distance_request.unknown_policy = c->unknown_policy;
+    status = opx_query_distance(c->query, c->map, c->links, &distance_request, &distance);
+    if (status != OPX_OK) return cli_library_fail("check", status, "the distance query");
+    check_print_distance(c, &distance);
+    return -1;
+}
+
+/* Every link's pose at every waypoint of the CSV path (FK per waypoint). */
+static int path_poses(const check_context *c, opx_linkset *links, const robot_args *robot, const path_csv *csv,
+                      opx_pose **out) {
+    uint32_t link_count = 0, l;
+    size_t w;
+    cli_progress progress;
+    opx_linkset_link_count(links, &link_count);
+    *out = malloc(csv->waypoint_count * (link_count ? link_count : 1) * sizeof(opx_pose));
+    if (*out == NULL) return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's poses");
+    cli_progress_start(&progress, "kinematics of the path", csv->waypoint_count);
+    for (w = 0; w < csv->waypoint_count; ++w) {
+        const opx_status status = opx_linkset_set_named_joint_positions(
+            links, (const char *const *)csv->names, csv->values + w * csv->joint_count, csv->joint_count,
+            &robot->base_pose);
+        if (status != OPX_OK) {
+            cli_progress_finish(&progress);
+            return cli_fail("check", status == OPX_ERROR_INVALID_ARGUMENT ? CLI_EXIT_INPUT : CLI_EXIT_INTERNAL,
+                            "%s: waypoint %zu: %s", c->path_file, w, opx_last_error());
+        }
+        for (l = 0; l < link_count; ++l) opx_linkset_get_pose(links, l, &(*out)[w * link_count + l]);
+        cli_progress_update(&progress, w + 1);
+    }
+    cli_progress_finish(&progress);
+    return -1;
+}
+
+static int check_path(check_context *c, opx_linkset *links, const robot_args *robot, int *collided) {
+    char error[512];
+    path_csv csv;
+    opx_pose *poses = NULL;
+    opx_path_request request = OPX_PATH_REQUEST_INIT;
+    opx_path_result result = OPX_PATH_RESULT_INIT;
+    opx_status status;
+    int code;
+    if (path_csv_read(c->path_file, &csv, error, sizeof error) != 0)
+        return cli_fail("check", CLI_EXIT_INPUT, "%s", error);
+    code = path_poses(c, links, robot, &csv, &poses);
+    request.unknown_policy = c->unknown_policy;
+    request.compute_distance = c->want_distance;
+    request.compute_cost = c->want_cost;
+    request.max_cost_boxes = CHECK_MAX_LISTED;
+    if (code < 0) {
+        status = opx_query_path(c->query, c->map, links, poses, csv.waypoint_count, 0, 0, &request, &result);
+        if (status != OPX_OK) code = cli_library_fail("check", status, "the path query");
+    }
+    if (code < 0) {
+        *collided = result.collided;
+        check_print_path(c, csv.waypoint_count, &result);
+        if (c->want_cost) check_print_cost(c, result.total_cost, result.cost_boxes_found, result.cost_box_count);
+    }
+    free(poses);
+    path_csv_free(&csv);
+    return code;
+}
+
+static int run(check_args *a, opx_octree *map, opx_linkset *links) {
+    check_context *c = &a->context;
+    int collided = 0, code;
+    double start;
+    opx_status status = opx_query_create(NULL, &c->query);
+    if (status != OPX_OK) return cli_library_fail("check", status, "creating a query");
+    c->map = map;
+    c->links = links;
+    check_print_head(c);
+    start = cli_now_ms();
+    code = c->path_file ? check_path(c, links, &a->robot, &collided) : check_one(c, &collided);
+    if (code < 0) check_print_tail(c, collided, cli_now_ms() - start);
+    opx_query_destroy(c->query);
+    return code >= 0 ? code : (collided ? CLI_EXIT_COLLISION : CLI_EXIT_OK);
+}
+
+int cmd_check(int argc, char **argv) {
+    check_args a;
+    opx_octree *map = NULL;
+    opx_linkset *links = NULL;
+    opx_status status;
+    int code = parse_arguments(argc, argv, &a);
+    if (code >= 0) return code;
+    status = opx_octree_load_file(a.map, NULL, &map);
+    if (status != OPX_OK) return cli_library_fail("check", status, "loading the map %s", a.map);
+    code = robot_load(&a.robot, "check", &links);
+    if (code < 0) code = run(&a, map, links);
+    opx_linkset_destroy(links);
+    opx_octree_destroy(map);
+    return code;
+}

@@ -1,0 +1,222 @@
+/* octoprox ingest CLOUD... -o MAP: build or update a map from point clouds. */
+#include "cli.h"
+#include "cloud_file.h"
+#include "commands.h"
+
+#include <string.h>
+#include <unistd.h>
+
+static const char kHelp[] =
+    "usage: octoprox ingest CLOUD.pcd|CLOUD.ply ... -o MAP.bt|MAP.ot\n"
+    "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--res 0.05]\n"
+    "                       [--endpoints] [--max-range M] [--json]\n"
+    "\n"
+    "Inserts each cloud as one sensor frame (OctoMap semantics: ray-cast, the\n"
+    "cells along each ray become more free, the endpoint cells more occupied)\n"
+    "and saves the map.  When MAP exists it is loaded and updated; otherwise a\n"
+    "new map is made.  Clouds: PCD v0.7 (ascii, binary) and PLY (ascii,\n"
+    "binary_little_endian), x y z as float or double, in the SENSOR frame.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output MAP    the map to write (.bt: occupancy only, .ot: log-odds)\n"
+    "  --sensor-pose POSE  the sensor frame in the map frame, for every cloud\n"
+    "                      (metres; quaternion x,y,z,w; default identity)\n"
+    "  --res R             resolution of a new map in metres (default 0.05); an\n"
+    "                      existing map keeps its own and R must match it\n"
+    "  --endpoints         insert endpoints only (no ray-casting, no free space)\n"
+    "  --max-range M       skip points farther than M metres from the sensor\n"
+    "  --json              one JSON object: output, updated, resolution, clouds\n"
+    "                      [{file, format, points, points_used, points_nonfinite,\n"
+    "                      points_out_of_range, points_outside_map, cells_hit,\n"
+    "                      cells_missed, insert_ms}], leaves {occupied,\n"
+    "                      uncertain, free}\n"
+    "  -h, --help          this help\n"
+    "\n"
+    "exit codes: 0 ok, 2 usage error, 3 a cloud or the map cannot be read or\n"
+    "written, 4 internal error\n";
+
+#define MAX_CLOUDS 256
+
+typedef struct ingest_args {
+    const char *clouds[MAX_CLOUDS];
+    int cloud_count;
+    const char *output;
+    opx_insert_options insert;
+    double resolution; /* 0: not given */
+    int json;
+} ingest_args;
+
+typedef struct cloud_result {
+    char format[40];
+    size_t points;
+    opx_insert_report report;
+    double insert_ms;
+} cloud_result;
+
+static int ends_with(const char *text, const char *suffix) {
+    const size_t n = strlen(text), m = strlen(suffix);
+    return n >= m && strcmp(text + n - m, suffix) == 0;
+}
+
+/* Returns -1 to go on, else an exit code. */
+static int parse_option(cli_args *args, ingest_args *out) {
+    int got;
+    if (cli_flag(args, "--json")) out->json = 1;
+    else if (cli_flag(args, "--endpoints")) out->insert.mode = OPX_INSERT_ENDPOINTS;
+    else if ((got = cli_value(args, "-o")) != 0 || (got = cli_value(args, "--output")) != 0) {
+        if (got < 0) return cli_usage("ingest", "-o needs a file name");
+        out->output = args->value;
+    } else if ((got = cli_value(args, "--sensor-pose")) != 0) {
+        if (got < 0 || cli_parse_pose(args->value, &out->insert.sensor_pose) != 0)
+            return cli_usage("ingest", "--sensor-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite numbers)");
+    } else if ((got = cli_value(args, "--res")) != 0) {
+        if (got < 0 || cli_parse_double(args->value, &out->resolution) != 0 || !(out->resolution > 0.0))
+            return cli_usage("ingest", "--res needs a positive resolution in metres");
+    } else if ((got = cli_value(args, "--max-range")) != 0) {
+        if (got < 0 || cli_parse_double(args->value, &out->insert.max_range) != 0 || !(out->insert.max_range > 0.0))
+            return cli_usage("ingest", "--max-range needs a positive distance in metres");
+    } else {
+        return cli_usage("ingest", "unknown option '%s'", args->argv[args->index]);
+    }
+    return -1;
+}
+
+/* Returns -1 to go on, else an exit code (0 after --help). */
+static int parse_arguments(int argc, char **argv, ingest_args *out) {
+    cli_args args = {argc, argv, 1, NULL};
+    const opx_insert_options defaults = OPX_INSERT_OPTIONS_INIT;
+    memset(out, 0, sizeof *out);
+    out->insert = defaults;
+    for (; args.index < argc; ++args.index) {
+        const char *arg = argv[args.index];
+        int code;
+        if (cli_is_help(arg)) {
+            fputs(kHelp, stdout);
+            return CLI_EXIT_OK;
+        }
+        if (arg[0] != '-') {
+            if (!cloud_file_supported(arg)) return cli_usage("ingest", "'%s' is not a .pcd or .ply file", arg);
+            if (out->cloud_count == MAX_CLOUDS) return cli_usage("ingest", "more than %d clouds", MAX_CLOUDS);
+            out->clouds[out->cloud_count++] = arg;
+        } else if ((code = parse_option(&args, out)) >= 0) {
+            return code;
+        }
+    }
+    if (out->cloud_count == 0) return cli_usage("ingest", "no cloud given");
+    if (out->output == NULL) return cli_usage("ingest", "no output map given (-o MAP.bt)");
+    if (!ends_with(out->output, ".bt") && !ends_with(out->output, ".ot"))
+        return cli_usage("ingest", "the output map '%s' must end in .bt or .ot", out->output);
+    return -1;
+}
+
+/* Loads the existing output map, or makes a new one. */
+static int open_map(const ingest_args *a, opx_octree **map, int *updated) {
+    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
+    opx_status status;
+    *updated = access(a->output, F_OK) == 0;
+    if (!*updated) {
+        if (a->resolution > 0.0) options.resolution = a->resolution;
+        status = opx_octree_create(&options, map);
+        return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "creating the map");
+    }
+    status = opx_octree_load_file(a->output, NULL, map);
+    if (status != OPX_OK) return cli_library_fail("ingest", status, "loading the map %s to update", a->output);
+    opx_octree_get_options(*map, &options);
+    if (a->resolution > 0.0 && a->resolution != options.resolution)
+        return cli_usage("ingest", "%s has resolution %g m, not --res %g", a->output, options.resolution,
+                         a->resolution);
+    return -1;
+}
+
+static int insert_cloud(const char *path, opx_octree *map, const opx_insert_options *insert, cloud_result *r) {
+    char error[600];
+    cloud_points cloud;
+    opx_status status;
+    double start;
+    if (cloud_read_file(path, &cloud, error, sizeof error) != 0)
+        return cli_fail("ingest", CLI_EXIT_INPUT, "%s", error);
+    snprintf(r->format, sizeof r->format, "%s", cloud.format);
+    r->points = cloud.count;
+    r->report = (opx_insert_report)OPX_INSERT_REPORT_INIT;
+    start = cli_now_ms();
+    status = cloud.count == 0 ? OPX_OK
+                              : opx_octree_insert_points(map, cloud.xyz, cloud.count, 0, OPX_SCALAR_FLOAT32,
+                                                         insert, &r->report);
+    r->insert_ms = cli_now_ms() - start;
+    cloud_free(&cloud);
+    return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "inserting %s", path);
+}
+
+static void print_cloud_json(const char *path, const cloud_result *r, int last) {
+    const opx_insert_report *p = &r->report;
+    fputs("    {\"file\": ", stdout);
+    json_string(stdout, path);
+    fputs(", \"format\": ", stdout);
+    json_string(stdout, r->format);
+    printf(", \"points\": %zu, \"points_used\": %llu, \"points_nonfinite\": %llu, \"points_out_of_range\": %llu, "
+           "\"points_outside_map\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, \"insert_ms\": %.3f}%s\n",
+           r->points, (unsigned long long)p->points_used, (unsigned long long)p->points_nonfinite,
+           (unsigned long long)p->points_out_of_range, (unsigned long long)p->points_outside_map,
+           (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, r->insert_ms, last ? "" : ",");
+}
+
+static void print_report(const ingest_args *a, const cloud_result *results, int updated,
+                         const opx_octree_stats *s) {
+    int i;
+    if (a->json) {
+        fputs("{\n  \"output\": ", stdout);
+        json_string(stdout, a->output);
+        printf(",\n  \"updated\": %s,\n  \"resolution\": ", updated ? "true" : "false");
+        json_number(stdout, s->resolution);
+        fputs(",\n  \"clouds\": [\n", stdout);
+        for (i = 0; i < a->cloud_count; ++i) print_cloud_json(a->clouds[i], &results[i], i + 1 == a->cloud_count);
+        printf("  ],\n  \"leaves\": {\"occupied\": %llu, \"uncertain\": %llu, \"free\": %llu}\n}\n",
+               (unsigned long long)s->leaves_occupied, (unsigned long long)s->leaves_uncertain,
+               (unsigned long long)s->leaves_free);
+        return;
+    }
+    for (i = 0; i < a->cloud_count; ++i) {
+        const opx_insert_report *p = &results[i].report;
+        printf("%s (%s): %zu points, %llu used, %llu skipped; %llu cells hit, %llu missed; %.1f ms\n",
+               a->clouds[i], results[i].format, results[i].points, (unsigned long long)p->points_used,
+               (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map),
+               (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, results[i].insert_ms);
+    }
+    printf("%s %s: resolution %g m, leaves occupied %llu, uncertain %llu, free %llu\n",
+           updated ? "updated" : "wrote", a->output, s->resolution, (unsigned long long)s->leaves_occupied,
+           (unsigned long long)s->leaves_uncertain, (unsigned long long)s->leaves_free);
+}
+
+static int ingest_all(const ingest_args *a, opx_octree *map, cloud_result *results) {
+    cli_progress progress;
+    int i, code = -1;
+    cli_progress_start(&progress, "ingesting clouds", (size_t)a->cloud_count);
+    for (i = 0; i < a->cloud_count && code < 0; ++i) {
+        code = insert_cloud(a->clouds[i], map, &a->insert, &results[i]);
+        cli_progress_update(&progress, (size_t)i + 1);
+    }
+    cli_progress_finish(&progress);
+    return code;
+}
+
+int cmd_ingest(int argc, char **argv) {
+    static cloud_result results[MAX_CLOUDS];
+    ingest_args a;
+    opx_octree *map = NULL;
+    opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
+    opx_status status;
+    int updated = 0, code = parse_arguments(argc, argv, &a);
+    if (code >= 0) return code;
+    code = open_map(&a, &map, &updated);
+    if (code < 0) code = ingest_all(&a, map, results);
+    if (code < 0 && (status = opx_octree_save_file(map, a.output, OPX_FORMAT_AUTO)) != OPX_OK)
+        code = cli_library_fail("ingest", status, "saving the map %s", a.output);
+    if (code < 0 && (status = opx_octree_get_stats(map, &stats)) != OPX_OK)
+        code = cli_library_fail("ingest", status, "reading the map");
+    if (code < 0) {
+        print_report(&a, results, updated, &stats);
+        code = CLI_EXIT_OK;
+    }
+    opx_octree_destroy(map);
+    return code;
+}
