@@ -66,7 +66,6 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     // sums are identical.
     for (const auto &key : free_cells) tree_->updateNode(key, false, false);
     for (const auto &key : occupied_cells) tree_->updateNode(key, true, false);
-    mark_changed();
     grow_known_bounds(free_cells);
     grow_known_bounds(occupied_cells);
     counts.cells_missed = free_cells.size();

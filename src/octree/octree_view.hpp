@@ -3,11 +3,9 @@
 // Query engines see the map only through this class: nodes as opaque
 // references, children by index, log-odds per node (an inner node holds the
 // maximum of its children, which makes pruning by threshold safe), and cell
-// geometry from integer keys.  The storage behind it is the map's compact
-// copy of OctoMap's tree (compact_octree.hpp).
+// geometry from integer keys.  The storage behind it is OctoMap's OcTree
+// today; replacing it means rewriting octree_view_octomap.inl only.
 #pragma once
-
-#include "octree/compact_octree.hpp"
 
 #include <cstdint>
 
@@ -42,22 +40,21 @@ struct CellKey {
 
 class OctreeView {
 public:
-    using NodeRef = const CompactNode *;
+    using NodeRef = const void *;
 
-    OctreeView(const CompactOctree &tree, double resolution) : tree_(&tree), resolution_(resolution) {}
+    explicit OctreeView(const void *octomap_tree);
 
     double resolution() const { return resolution_; }
-    NodeRef root() const { return tree_->root(); }  // nullptr when the map is empty
-    bool has_children(NodeRef node) const { return node->child_mask != 0; }
-    NodeRef child(NodeRef node, int index) const { return tree_->child(node, index); }  // nullptr: unknown
-    float log_odds(NodeRef node) const { return node->log_odds; }
-    // Obstacle bounds (see CompactNode) are valid for thresholds at or
-    // above this log-odds.
-    float obstacle_log_odds() const { return tree_->obstacle_log_odds(); }
+    NodeRef root() const;                       // nullptr when the map is empty
+    bool has_children(NodeRef node) const;
+    NodeRef child(NodeRef node, int index) const;  // nullptr: unknown space
+    float log_odds(NodeRef node) const;
 
 private:
-    const CompactOctree *tree_;
+    const void *tree_;
     double resolution_;
 };
 
 }  // namespace octoprox
+
+#include "octree/octree_view_octomap.inl"

@@ -64,17 +64,6 @@ SensorOctree::SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::
     recompute_known_bounds();
 }
 
-const CompactOctree &SensorOctree::laid_out() const {
-    if (layout_stale_.load(std::memory_order_acquire)) {
-        std::lock_guard<std::mutex> lock(layout_mutex_);
-        if (layout_stale_.load(std::memory_order_relaxed)) {
-            compact_.rebuild(*tree_, occupied_log_odds_);
-            layout_stale_.store(false, std::memory_order_release);
-        }
-    }
-    return compact_;
-}
-
 void SensorOctree::recompute_known_bounds() {
     known_bounds_ = Aabb();
     const TreeStats s = stats();
@@ -123,29 +112,27 @@ uint64_t SensorOctree::next_identity() {
 void SensorOctree::clear() {
     ++generation_;
     tree_->clear();
-    mark_changed();
     known_bounds_ = Aabb();
 }
 
 // Walks from the root towards the point's finest cell; stops at the leaf
 // holding it, or at the first missing child (unknown space).
 CellInfo SensorOctree::classify(const Vec3 &point) const {
-    // One root-to-leaf path: OctoMap's own nodes, so that classifying
-    // between inserts never lays the map out for queries.
     const octomap::OcTreeKey key = tree_->coordToKey(point.x(), point.y(), point.z());
+    const OctreeView tree = view();
     CellKey cell;
     CellInfo info;
-    const octomap::OcTreeNode *node = tree_->getRoot();
-    while (node != nullptr && tree_->nodeHasChildren(node)) {
+    OctreeView::NodeRef node = tree.root();
+    while (node != nullptr && tree.has_children(node)) {
         const int shift = kTreeDepth - 1 - cell.depth;
         const int index = ((key[0] >> shift) & 1) | (((key[1] >> shift) & 1) << 1) |
                           (((key[2] >> shift) & 1) << 2);
         cell = cell.child(index);
-        node = tree_->nodeChildExists(node, index) ? tree_->getNodeChild(node, index) : nullptr;
+        node = tree.child(node, index);
     }
     if (node != nullptr) {
-        info.cell_class = classify_log_odds(node->getLogOdds());
-        info.probability = probability_from_log_odds(node->getLogOdds());
+        info.cell_class = classify_log_odds(tree.log_odds(node));
+        info.probability = probability_from_log_odds(tree.log_odds(node));
     }
     for (int axis = 0; axis < 3; ++axis) info.center[axis] = cell.center(axis, params_.resolution);
     info.size = cell.size(params_.resolution);
@@ -180,7 +167,7 @@ TreeStats SensorOctree::stats() const {
             },
             [&](OctreeView::NodeRef, const CellKey &) { ++s.inner_nodes; });
     }
-    s.memory_bytes = tree_->memoryUsage() + laid_out().memory_bytes();
+    s.memory_bytes = tree_->memoryUsage();
     return s;
 }
 

@@ -5,17 +5,14 @@
 
 #include "geometry/aabb.hpp"
 #include "geometry/pose.hpp"
-#include "octree/compact_octree.hpp"
 #include "octree/octree_params.hpp"
 #include "octree/octree_view.hpp"
 
 #include <octomap/OcTreeKey.h>
 
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 
 namespace octomap {
 class OcTree;
@@ -71,9 +68,7 @@ public:
     ~SensorOctree();
 
     const OctreeParams &params() const { return params_; }
-    // Lays the map out for queries first when it changed since the last
-    // call (see CompactOctree); safe from any number of threads at once.
-    OctreeView view() const { return OctreeView(laid_out(), params_.resolution); }
+    OctreeView view() const { return OctreeView(tree_.get()); }
     const octomap::OcTree &octomap_tree() const { return *tree_; }
 
     int classify_log_odds(float log_odds) const {
@@ -99,9 +94,6 @@ private:
     void apply_params();
     void grow_known_bounds(const octomap::KeySet &keys);
     void recompute_known_bounds();
-    // Every change of tree_ calls this; the next view() lays it out again.
-    void mark_changed() { layout_stale_.store(true, std::memory_order_release); }
-    const CompactOctree &laid_out() const;
 
     OctreeParams params_;
     std::unique_ptr<octomap::OcTree> tree_;
@@ -109,12 +101,6 @@ private:
     // exactly as OctoMap's isNodeOccupied does.
     float occupied_log_odds_ = 0.0f;
     float free_log_odds_ = 0.0f;
-    // The query layout, rebuilt lazily: one rebuild per batch of changes,
-    // however small each change (a point per insert would otherwise cost
-    // a pass over the whole map each).
-    mutable CompactOctree compact_;
-    mutable std::atomic<bool> layout_stale_{true};
-    mutable std::mutex layout_mutex_;
     Aabb known_bounds_;
     uint64_t identity_ = next_identity();
     uint64_t generation_ = 0;

@@ -13,19 +13,15 @@ namespace octoprox {
 double DirectDistance::lower_bound(int32_t robot_node, const Aabb &cell) const {
     const AabbTreeNode &robot = links_->tree().node(robot_node);
     const double boxes = std::sqrt(robot.box.squared_distance(cell));
-    // Already prunable: the shape's bound could only confirm it.
-    if (!robot.is_leaf() || boxes >= bound_) return boxes;
+    if (!robot.is_leaf()) return boxes;
     return std::max(boxes, shape_lower_bound(links_->placed()[robot.item], cell));
 }
 
-// The map's obstacle bounds are those of leaves at or above its own
-// threshold: they cover this query's obstacles when its threshold is no
-// lower, and unknown space is not an obstacle.
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
-    obstacle_bounds_ = !settings.unknown_occupied && settings.threshold_log_odds >= tree.view().obstacle_log_odds();
+    (void)tree;
 }
 
 DistanceOutcome DirectDistance::run(const SensorOctree &tree, const LinkSet &links,
@@ -65,8 +61,7 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
 void DirectDistance::search(int32_t robot_node) {
     const Cell root = root_cell(*view_);
     if (root.node == nullptr && !settings_.unknown_occupied) return;
-    if (obstacle_bounds_ && (root.node == nullptr || !root.node->has_obstacle)) return;
-    recurse(root, robot_node, lower_bound(robot_node, pruning_box(root)));
+    recurse(root, robot_node, lower_bound(robot_node, root.box));
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by
@@ -95,8 +90,7 @@ void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower)
         return descend_octree(cell, robot_node);
     // Nearer robot child first.
     int32_t first = robot.left, second = robot.right;
-    const Aabb box = pruning_box(cell);
-    double lower_first = lower_bound(first, box), lower_second = lower_bound(second, box);
+    double lower_first = lower_bound(first, cell.box), lower_second = lower_bound(second, cell.box);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
     recurse(cell, first, lower_first);
     recurse(cell, second, lower_second);
@@ -115,26 +109,18 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
     for (unsigned bits = reached; bits != 0; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
         const OctreeView::NodeRef node = view_->child(cell.node, i);
-        if (!may_hold_obstacle(node)) continue;
-        // The cube's box is only cut when the child survives.
-        const bool tight = obstacle_bounds_ && node != nullptr;
-        const double lower = tight ? lower_bound(robot_node, obstacle_box(*node, view_->resolution()))
-                                   : lower_bound(robot_node, child_cell(cell, node, i, mid).box);
-        if (can_prune(lower)) continue;
+        if (node == nullptr ? !settings_.unknown_occupied
+                            : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
+            continue;
+        const Cell child = child_cell(cell, node, i, mid);
+        const Child entry{child, lower_bound(robot_node, child.box)};
+        if (can_prune(entry.lower)) continue;
         // Insertion sort: at most 8 children.
         int at = count++;
-        for (; at > 0 && children[at - 1].lower > lower; --at) children[at] = children[at - 1];
-        children[at] = Child{i, node, lower};
+        for (; at > 0 && children[at - 1].lower > entry.lower; --at) children[at] = children[at - 1];
+        children[at] = entry;
     }
-    for (int k = 0; k < count; ++k)
-        recurse(child_cell(cell, children[k].node, children[k].index, mid), robot_node, children[k].lower);
-}
-
-// False when nothing below `node` (nullptr: unknown space) is an obstacle.
-bool DirectDistance::may_hold_obstacle(OctreeView::NodeRef node) const {
-    if (settings_.unknown_occupied) return true;
-    if (node == nullptr) return false;
-    return view_->log_odds(node) >= settings_.threshold_log_odds;  // an inner node holds its maximum
+    for (int i = 0; i < count; ++i) recurse(children[i].cell, robot_node, children[i].lower);
 }
 
 void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {

@@ -24,8 +24,7 @@ public:
 private:
     using Cell = OctreeCell;
     struct Child {
-        int index;
-        OctreeView::NodeRef node;
+        Cell cell;
         double lower;
     };
 
@@ -36,14 +35,7 @@ private:
     void test_leaf_pair(const Cell &cell, int32_t robot_node);
     bool can_prune(double lower) const;
     bool is_obstacle(const Cell &cell) const;
-    bool may_hold_obstacle(OctreeView::NodeRef node) const;
     double lower_bound(int32_t robot_node, const Aabb &cell) const;
-    // What bounds the obstacles of a cell: their own box when the map's
-    // obstacle bounds hold for this query, else the cube.
-    Aabb pruning_box(const Cell &cell) const {
-        if (!obstacle_bounds_ || cell.node == nullptr) return cell.box;
-        return obstacle_box(*cell.node, view_->resolution());
-    }
 
     const OctreeView *view_ = nullptr;
     const LinkSet *links_ = nullptr;
@@ -51,7 +43,6 @@ private:
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance
     int32_t only_link_ = -1;         // per-link mode: the link searched
-    bool obstacle_bounds_ = false;   // the map's obstacle bounds cover this query's obstacles
 };
 
 }  // namespace octoprox

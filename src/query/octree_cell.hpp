@@ -29,20 +29,6 @@ inline Vec3 mid_planes(const OctreeCell &cell, double resolution) {
     return Vec3(cell.key.center(0, resolution), cell.key.center(1, resolution), cell.key.center(2, resolution));
 }
 
-// The box of the obstacle leaves below a node (CompactNode's key bounds),
-// grown by a billionth of a cell so that rounding never makes it smaller
-// than the cell boxes it stands for: a lower bound from it stays a lower
-// bound.  Only for nodes with has_obstacle set.
-inline Aabb obstacle_box(const CompactNode &node, double resolution) {
-    const double margin = 1e-9 * resolution;
-    Aabb box;
-    for (int axis = 0; axis < 3; ++axis) {
-        box.lo[axis] = (node.obstacle_lo[axis] - kKeyCenter) * resolution - margin;
-        box.hi[axis] = (node.obstacle_hi[axis] + 1 - kKeyCenter) * resolution + margin;
-    }
-    return box;
-}
-
 // Child i of a cell (x = bit 0, y = bit 1, z = bit 2), its box cut at the mid-planes.
 inline OctreeCell child_cell(const OctreeCell &cell, OctreeView::NodeRef child, int i, const Vec3 &mid) {
     OctreeCell c{child, cell.key.child(i), cell.box};
