@@ -167,3 +167,25 @@ double cli_now_ms(void) {
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
+
+int cli_walk_map_arguments(int argc, char **argv, const char *command, const char *help,
+                           const char *help_part, const char **out_map, cli_option_parser parse_option,
+                           void *context) {
+    cli_args args = {argc, argv, 1, NULL};
+    *out_map = NULL;
+    for (; args.index < argc; ++args.index) {
+        const char *arg = argv[args.index];
+        int code;
+        if (cli_is_help(arg)) {
+            printf(help, help_part);
+            return CLI_EXIT_OK;
+        }
+        if (arg[0] != '-') {
+            if (*out_map != NULL) return cli_usage(command, "one map only ('%s' and '%s' given)", *out_map, arg);
+            *out_map = arg;
+        } else if ((code = parse_option(&args, context)) >= 0) {
+            return code;
+        }
+    }
+    return -1;
+}

@@ -53,6 +53,17 @@ int cli_value(cli_args *args, const char *name);
 /* 1 for --help and -h. */
 int cli_is_help(const char *arg);
 
+/* Takes the option at args->index: -1 when taken, else an exit code. */
+typedef int (*cli_option_parser)(cli_args *args, void *context);
+/* Walks the arguments of a command that works on one map: --help prints
+ * `help` (a printf format with one %s, `help_part`) and gives CLI_EXIT_OK;
+ * the one positional argument is the map (*out_map; a second one is a
+ * usage error); every option goes to parse_option.  -1 when every
+ * argument was taken, else the exit code. */
+int cli_walk_map_arguments(int argc, char **argv, const char *command, const char *help,
+                           const char *help_part, const char **out_map, cli_option_parser parse_option,
+                           void *context);
+
 /* Numbers and poses; 0 on success, -1 when malformed or not finite. */
 int cli_parse_double(const char *text, double *out);
 /* "x,y,z" or "x,y,z,qx,qy,qz,qw" (metres, quaternion in ROS order). */

@@ -49,7 +49,8 @@ typedef struct check_args {
     check_context context;
 } check_args;
 
-static int parse_option(cli_args *args, check_args *a) {
+static int parse_option(cli_args *args, void *context) {
+    check_args *a = context;
     int got, code;
     if (robot_args_option(args, &a->robot, "check", &code)) return code;
     if (cli_flag(args, "--json")) a->context.json = 1;
@@ -69,23 +70,11 @@ static int parse_option(cli_args *args, check_args *a) {
 }
 
 static int parse_arguments(int argc, char **argv, check_args *a) {
-    cli_args args = {argc, argv, 1, NULL};
+    int code;
     memset(a, 0, sizeof *a);
     robot_args_init(&a->robot);
-    for (; args.index < argc; ++args.index) {
-        const char *arg = argv[args.index];
-        int code;
-        if (cli_is_help(arg)) {
-            printf(kHelp, kRobotOptionsHelp);
-            return CLI_EXIT_OK;
-        }
-        if (arg[0] != '-') {
-            if (a->map != NULL) return cli_usage("check", "one map only ('%s' and '%s' given)", a->map, arg);
-            a->map = arg;
-        } else if ((code = parse_option(&args, a)) >= 0) {
-            return code;
-        }
-    }
+    code = cli_walk_map_arguments(argc, argv, "check", kHelp, kRobotOptionsHelp, &a->map, parse_option, a);
+    if (code >= 0) return code;
     if (a->map == NULL) return cli_usage("check", "no map file given");
     if (a->robot.urdf == NULL) return cli_usage("check", "no robot given (--urdf ROBOT.urdf)");
     a->context.map_path = a->map;

@@ -53,7 +53,8 @@ static int set_output(const cli_args *args, export_args *a, int got, int ply) {
     return -1;
 }
 
-static int parse_option(cli_args *args, export_args *a) {
+static int parse_option(cli_args *args, void *context) {
+    export_args *a = context;
     int got, code;
     if (robot_args_option(args, &a->robot, "export", &code)) return code;
     if (cli_flag(args, "--json")) a->json = 1;
@@ -66,23 +67,11 @@ static int parse_option(cli_args *args, export_args *a) {
 }
 
 static int parse_arguments(int argc, char **argv, export_args *a) {
-    cli_args args = {argc, argv, 1, NULL};
+    int code;
     memset(a, 0, sizeof *a);
     robot_args_init(&a->robot);
-    for (; args.index < argc; ++args.index) {
-        const char *arg = argv[args.index];
-        int code;
-        if (cli_is_help(arg)) {
-            printf(kHelp, kRobotOptionsHelp);
-            return CLI_EXIT_OK;
-        }
-        if (arg[0] != '-') {
-            if (a->map != NULL) return cli_usage("export", "one map only ('%s' and '%s' given)", a->map, arg);
-            a->map = arg;
-        } else if ((code = parse_option(&args, a)) >= 0) {
-            return code;
-        }
-    }
+    code = cli_walk_map_arguments(argc, argv, "export", kHelp, kRobotOptionsHelp, &a->map, parse_option, a);
+    if (code >= 0) return code;
     if (a->map == NULL) return cli_usage("export", "no map file given");
     if (a->output == NULL) return cli_usage("export", "no output given (--obj OUT or --ply OUT)");
     if (a->points && !a->ply) return cli_usage("export", "--points needs --ply");
