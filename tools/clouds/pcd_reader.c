@@ -1,8 +1,9 @@
 /* PCD v0.7 reader: see pcd_reader.h. */
 #include "pcd_reader.h"
 
+#include "cloud_io.h"
+
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,13 +32,6 @@ typedef struct pcd_layout {
     size_t value_index[3];
 } pcd_layout;
 
-static void set_error(char *error, size_t error_size, const char *format, ...) {
-    va_list args;
-    if (error == NULL || error_size == 0) return;
-    va_start(args, format);
-    vsnprintf(error, error_size, format, args);
-    va_end(args);
-}
 
 static int is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -88,7 +82,7 @@ static int apply_header_line(pcd_header *h, char *line, char *error, size_t erro
     } else if (strcmp(words[0], "DATA") == 0 && n == 2) {
         snprintf(h->data, sizeof h->data, "%s", words[1]);
     } else if (strcmp(words[0], "VERSION") != 0) {
-        set_error(error, error_size, "unexpected header line starting with \"%s\"", words[0]);
+        cloud_set_error(error, error_size, "unexpected header line starting with \"%s\"", words[0]);
         return -1;
     }
     return 0;
@@ -102,7 +96,7 @@ static int read_header(FILE *file, pcd_header *h, char *error, size_t error_size
     h->points = -1;
     while (h->data[0] == '\0') {
         if (fgets(line, sizeof line, file) == NULL) {
-            set_error(error, error_size, "the header ends before a DATA line");
+            cloud_set_error(error, error_size, "the header ends before a DATA line");
             return -1;
         }
         if (apply_header_line(h, line, error, error_size) != 0) return -1;
@@ -122,17 +116,17 @@ static int compute_layout(const pcd_header *h, pcd_layout *layout, char *error, 
     static const char *const axes[3] = {"x", "y", "z"};
     int axis, i;
     if (h->field_count == 0 || !h->have_sizes || !h->have_types || !h->have_counts) {
-        set_error(error, error_size, "FIELDS, SIZE, TYPE and COUNT must all be given, one entry per field");
+        cloud_set_error(error, error_size, "FIELDS, SIZE, TYPE and COUNT must all be given, one entry per field");
         return -1;
     }
     for (axis = 0; axis < 3; ++axis) {
         const int f = find_field(h, axes[axis]);
         if (f < 0) {
-            set_error(error, error_size, "no field \"%s\" in FIELDS", axes[axis]);
+            cloud_set_error(error, error_size, "no field \"%s\" in FIELDS", axes[axis]);
             return -1;
         }
         if (h->types[f] != 'F' || (h->sizes[f] != 4 && h->sizes[f] != 8) || h->counts[f] != 1) {
-            set_error(error, error_size, "field \"%s\" is TYPE %c SIZE %d COUNT %d; only float32 "
+            cloud_set_error(error, error_size, "field \"%s\" is TYPE %c SIZE %d COUNT %d; only float32 "
                       "or float64 (F 4 1, F 8 1) is supported", axes[axis], h->types[f], h->sizes[f],
                       h->counts[f]);
             return -1;
@@ -141,7 +135,7 @@ static int compute_layout(const pcd_header *h, pcd_layout *layout, char *error, 
     memset(layout, 0, sizeof *layout);
     for (i = 0; i < h->field_count; ++i) {
         if (h->sizes[i] <= 0 || h->sizes[i] > 8 || h->counts[i] <= 0 || h->counts[i] > 1 << 16) {
-            set_error(error, error_size, "field \"%s\" has SIZE %d COUNT %d; sizes are 1..8 bytes",
+            cloud_set_error(error, error_size, "field \"%s\" has SIZE %d COUNT %d; sizes are 1..8 bytes",
                       h->names[i], h->sizes[i], h->counts[i]);
             return -1;
         }
@@ -160,11 +154,11 @@ static int compute_layout(const pcd_header *h, pcd_layout *layout, char *error, 
 
 static int check_dimensions(const pcd_header *h, char *error, size_t error_size) {
     if (h->width <= 0 || h->height <= 0) {
-        set_error(error, error_size, "WIDTH %ld and HEIGHT %ld must be positive", h->width, h->height);
+        cloud_set_error(error, error_size, "WIDTH %ld and HEIGHT %ld must be positive", h->width, h->height);
         return -1;
     }
     if (h->points >= 0 && h->points != h->width * h->height) {
-        set_error(error, error_size, "POINTS %ld is not WIDTH * HEIGHT = %ld", h->points, h->width * h->height);
+        cloud_set_error(error, error_size, "POINTS %ld is not WIDTH * HEIGHT = %ld", h->points, h->width * h->height);
         return -1;
     }
     return 0;
@@ -176,12 +170,12 @@ static int read_binary_points(FILE *file, const pcd_layout *layout, pcd_cloud *c
     size_t i;
     int axis;
     if (record == NULL) {
-        set_error(error, error_size, "out of memory");
+        cloud_set_error(error, error_size, "out of memory");
         return -1;
     }
     for (i = 0; i < cloud->count; ++i) {
         if (fread(record, 1, layout->point_bytes, file) != layout->point_bytes) {
-            set_error(error, error_size, "binary data truncated at point %zu of %zu", i, cloud->count);
+            cloud_set_error(error, error_size, "binary data truncated at point %zu of %zu", i, cloud->count);
             free(record);
             return -1;
         }
@@ -215,12 +209,12 @@ static int read_ascii_points(FILE *file, const pcd_layout *layout, pcd_cloud *cl
     for (i = 0; i < cloud->count; ++i) {
         for (v = 0; v < layout->point_values; ++v) {
             if (fscanf(file, "%127s", word) != 1) {
-                set_error(error, error_size, "ascii data truncated at point %zu of %zu", i, cloud->count);
+                cloud_set_error(error, error_size, "ascii data truncated at point %zu of %zu", i, cloud->count);
                 return -1;
             }
             for (axis = 0; axis < 3; ++axis)
                 if (layout->value_index[axis] == v && parse_float(word, &cloud->xyz[3 * i + axis]) != 0) {
-                    set_error(error, error_size, "ascii value \"%s\" of point %zu is not a number", word, i);
+                    cloud_set_error(error, error_size, "ascii value \"%s\" of point %zu is not a number", word, i);
                     return -1;
                 }
         }
@@ -228,24 +222,16 @@ static int read_ascii_points(FILE *file, const pcd_layout *layout, pcd_cloud *cl
     return 0;
 }
 
-static size_t count_finite(const pcd_cloud *cloud) {
-    size_t i, n = 0;
-    for (i = 0; i < cloud->count; ++i) {
-        const float *p = &cloud->xyz[3 * i];
-        if (isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2])) ++n;
-    }
-    return n;
-}
 
 static int read_points(FILE *file, const pcd_header *h, pcd_cloud *out, char *error, size_t error_size) {
     pcd_layout layout;
     if (strcmp(h->data, "binary_compressed") == 0) {
-        set_error(error, error_size, "DATA binary_compressed (LZF) is unsupported; convert the "
+        cloud_set_error(error, error_size, "DATA binary_compressed (LZF) is unsupported; convert the "
                   "file to DATA binary or ascii first");
         return -1;
     }
     if (strcmp(h->data, "binary") != 0 && strcmp(h->data, "ascii") != 0) {
-        set_error(error, error_size, "unknown DATA kind \"%s\"", h->data);
+        cloud_set_error(error, error_size, "unknown DATA kind \"%s\"", h->data);
         return -1;
     }
     if (compute_layout(h, &layout, error, error_size) != 0) return -1;
@@ -257,37 +243,30 @@ static int read_points(FILE *file, const pcd_header *h, pcd_cloud *out, char *er
     snprintf(out->data_format, sizeof out->data_format, "%s", h->data);
     out->xyz = malloc(out->count * 3 * sizeof(float));
     if (out->xyz == NULL) {
-        set_error(error, error_size, "out of memory for %zu points", out->count);
+        cloud_set_error(error, error_size, "out of memory for %zu points", out->count);
         return -1;
     }
     if (strcmp(h->data, "binary") == 0) return read_binary_points(file, &layout, out, error, error_size);
     return read_ascii_points(file, &layout, out, error, error_size);
 }
 
-int pcd_read_file(const char *path, pcd_cloud *out, char *error, size_t error_size) {
-    char reason[512] = "";
+static int read_pcd(FILE *file, void *out, char *reason, size_t reason_size) {
     pcd_header header;
-    FILE *file;
-    int status;
+    const int status = read_header(file, &header, reason, reason_size);
+    return status != 0 ? status : read_points(file, &header, out, reason, reason_size);
+}
+
+int pcd_read_file(const char *path, pcd_cloud *out, char *error, size_t error_size) {
     if (out == NULL || path == NULL) {
-        set_error(error, error_size, "pcd_read_file: path and out must not be NULL");
+        cloud_set_error(error, error_size, "pcd_read_file: path and out must not be NULL");
         return -1;
     }
     memset(out, 0, sizeof *out);
-    file = fopen(path, "rb");
-    if (file == NULL) {
-        set_error(error, error_size, "%s: cannot open for reading", path);
-        return -1;
-    }
-    status = read_header(file, &header, reason, sizeof reason);
-    if (status == 0) status = read_points(file, &header, out, reason, sizeof reason);
-    fclose(file);
-    if (status != 0) {
-        set_error(error, error_size, "%s: %s", path, reason);
+    if (cloud_read_path(path, read_pcd, out, error, error_size) != 0) {
         pcd_free(out);
         return -1;
     }
-    out->finite_count = count_finite(out);
+    out->finite_count = cloud_count_finite(out->xyz, out->count);
     return 0;
 }
 

@@ -2,8 +2,9 @@
 #define _POSIX_C_SOURCE 200809L
 #include "ply_reader.h"
 
+#include "cloud_io.h"
+
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,13 +37,6 @@ typedef struct ply_header {
     ply_element elements[PLY_MAX_ELEMENTS];
 } ply_header;
 
-static void set_error(char *error, size_t error_size, const char *format, ...) {
-    va_list args;
-    if (error == NULL || error_size == 0) return;
-    va_start(args, format);
-    vsnprintf(error, error_size, format, args);
-    va_end(args);
-}
 
 /* The size and kind of a PLY scalar type name; 0 when unknown. */
 static int type_of(const char *name, char *kind) {
@@ -65,7 +59,7 @@ static int type_of(const char *name, char *kind) {
 static int parse_property(ply_element *e, char *words[], int n, char *error, size_t error_size) {
     ply_property *p;
     if (e->property_count == PLY_MAX_PROPERTIES) {
-        set_error(error, error_size, "element \"%s\" has more than %d properties", e->name, PLY_MAX_PROPERTIES);
+        cloud_set_error(error, error_size, "element \"%s\" has more than %d properties", e->name, PLY_MAX_PROPERTIES);
         return -1;
     }
     p = &e->properties[e->property_count];
@@ -76,18 +70,18 @@ static int parse_property(ply_element *e, char *words[], int n, char *error, siz
         p->type_size = type_of(words[3], &p->type_kind);
         snprintf(p->name, sizeof p->name, "%s", words[4]);
         if (p->count_size == 0 || p->count_kind == 'f' || p->type_size == 0) {
-            set_error(error, error_size, "bad list property \"%s %s %s\"", words[2], words[3], words[4]);
+            cloud_set_error(error, error_size, "bad list property \"%s %s %s\"", words[2], words[3], words[4]);
             return -1;
         }
     } else if (n == 3) {
         p->type_size = type_of(words[1], &p->type_kind);
         snprintf(p->name, sizeof p->name, "%s", words[2]);
         if (p->type_size == 0) {
-            set_error(error, error_size, "unknown property type \"%s\"", words[1]);
+            cloud_set_error(error, error_size, "unknown property type \"%s\"", words[1]);
             return -1;
         }
     } else {
-        set_error(error, error_size, "malformed property line");
+        cloud_set_error(error, error_size, "malformed property line");
         return -1;
     }
     ++e->property_count;
@@ -108,7 +102,7 @@ static int parse_element(ply_header *h, char *words[], int n, char *error, size_
     ply_element *e;
     char *end = NULL;
     if (n != 3 || h->element_count == PLY_MAX_ELEMENTS) {
-        set_error(error, error_size, "malformed element line (or more than %d elements)", PLY_MAX_ELEMENTS);
+        cloud_set_error(error, error_size, "malformed element line (or more than %d elements)", PLY_MAX_ELEMENTS);
         return -1;
     }
     e = &h->elements[h->element_count++];
@@ -116,7 +110,7 @@ static int parse_element(ply_header *h, char *words[], int n, char *error, size_
     snprintf(e->name, sizeof e->name, "%s", words[1]);
     e->count = strtoll(words[2], &end, 10);
     if (*end != '\0' || e->count < 0 || (unsigned long long)e->count > SIZE_MAX / (3 * sizeof(float))) {
-        set_error(error, error_size, "element \"%s\" has a bad count \"%s\"", e->name, words[2]);
+        cloud_set_error(error, error_size, "element \"%s\" has a bad count \"%s\"", e->name, words[2]);
         return -1;
     }
     return 0;
@@ -124,14 +118,14 @@ static int parse_element(ply_header *h, char *words[], int n, char *error, size_
 
 static int parse_format(ply_header *h, char *words[], int n, char *error, size_t error_size) {
     if (n != 3) {
-        set_error(error, error_size, "malformed format line");
+        cloud_set_error(error, error_size, "malformed format line");
         return -1;
     }
     snprintf(h->format, sizeof h->format, "%s", words[1]);
     if (strcmp(words[1], "ascii") == 0) h->binary = 0;
     else if (strcmp(words[1], "binary_little_endian") == 0) h->binary = 1;
     else {
-        set_error(error, error_size, "format \"%s\" is unsupported (ascii and binary_little_endian are)", words[1]);
+        cloud_set_error(error, error_size, "format \"%s\" is unsupported (ascii and binary_little_endian are)", words[1]);
         return -1;
     }
     return 0;
@@ -147,12 +141,12 @@ static int apply_header_line(ply_header *h, char *line, char *error, size_t erro
     if (strcmp(words[0], "element") == 0) return parse_element(h, words, n, error, error_size);
     if (strcmp(words[0], "property") == 0) {
         if (h->element_count == 0) {
-            set_error(error, error_size, "a property comes before any element");
+            cloud_set_error(error, error_size, "a property comes before any element");
             return -1;
         }
         return parse_property(&h->elements[h->element_count - 1], words, n, error, error_size);
     }
-    set_error(error, error_size, "unexpected header line starting with \"%s\"", words[0]);
+    cloud_set_error(error, error_size, "unexpected header line starting with \"%s\"", words[0]);
     return -1;
 }
 
@@ -162,19 +156,19 @@ static int read_header(FILE *file, ply_header *h, char *error, size_t error_size
     memset(h, 0, sizeof *h);
     if (fgets(line, sizeof line, file) == NULL || strncmp(line, "ply", 3) != 0 ||
         (line[3] != '\n' && line[3] != '\r')) {
-        set_error(error, error_size, "not a PLY file (the first line is not \"ply\")");
+        cloud_set_error(error, error_size, "not a PLY file (the first line is not \"ply\")");
         return -1;
     }
     while (status == 0) {
         if (fgets(line, sizeof line, file) == NULL) {
-            set_error(error, error_size, "the header ends before end_header");
+            cloud_set_error(error, error_size, "the header ends before end_header");
             return -1;
         }
         status = apply_header_line(h, line, error, error_size);
     }
     if (status < 0) return -1;
     if (h->format[0] == '\0') {
-        set_error(error, error_size, "no format line in the header");
+        cloud_set_error(error, error_size, "no format line in the header");
         return -1;
     }
     return 0;
@@ -217,9 +211,9 @@ static int read_property(FILE *file, int binary, const ply_property *p, double *
 
 static int row_error(int status, const ply_element *e, long long row, char *error, size_t error_size) {
     if (status == -1)
-        set_error(error, error_size, "data truncated in element \"%s\" at row %lld of %lld", e->name, row, e->count);
+        cloud_set_error(error, error_size, "data truncated in element \"%s\" at row %lld of %lld", e->name, row, e->count);
     else
-        set_error(error, error_size, "element \"%s\" row %lld holds a value that is not a number", e->name, row);
+        cloud_set_error(error, error_size, "element \"%s\" row %lld holds a value that is not a number", e->name, row);
     return -1;
 }
 
@@ -243,11 +237,11 @@ static int find_xyz(const ply_element *e, int where[3], char *error, size_t erro
         for (k = 0; k < e->property_count; ++k)
             if (strcmp(e->properties[k].name, axes[axis]) == 0) where[axis] = k;
         if (where[axis] < 0) {
-            set_error(error, error_size, "the vertex element has no property \"%s\"", axes[axis]);
+            cloud_set_error(error, error_size, "the vertex element has no property \"%s\"", axes[axis]);
             return -1;
         }
         if (e->properties[where[axis]].is_list || e->properties[where[axis]].type_kind != 'f') {
-            set_error(error, error_size, "vertex property \"%s\" is not float or double", axes[axis]);
+            cloud_set_error(error, error_size, "vertex property \"%s\" is not float or double", axes[axis]);
             return -1;
         }
     }
@@ -262,7 +256,7 @@ static int read_vertices(FILE *file, int binary, const ply_element *e, ply_cloud
     out->count = (size_t)e->count;
     out->xyz = malloc(out->count * 3 * sizeof(float) + 1);
     if (out->xyz == NULL) {
-        set_error(error, error_size, "out of memory for %zu vertices", out->count);
+        cloud_set_error(error, error_size, "out of memory for %zu vertices", out->count);
         return -1;
     }
     for (row = 0; row < e->count; ++row) {
@@ -285,37 +279,27 @@ static int read_body(FILE *file, const ply_header *h, ply_cloud *out, char *erro
         if (strcmp(e->name, "vertex") == 0) return read_vertices(file, h->binary, e, out, error, error_size);
         if (skip_element(file, h->binary, e, error, error_size) != 0) return -1;
     }
-    set_error(error, error_size, "no vertex element in the header");
+    cloud_set_error(error, error_size, "no vertex element in the header");
     return -1;
 }
 
-int ply_read_file(const char *path, ply_cloud *out, char *error, size_t error_size) {
-    char reason[512] = "";
+static int read_ply(FILE *file, void *out, char *reason, size_t reason_size) {
     ply_header header;
-    FILE *file;
-    int status;
-    size_t i;
+    const int status = read_header(file, &header, reason, reason_size);
+    return status != 0 ? status : read_body(file, &header, out, reason, reason_size);
+}
+
+int ply_read_file(const char *path, ply_cloud *out, char *error, size_t error_size) {
     if (out == NULL || path == NULL) {
-        set_error(error, error_size, "ply_read_file: path and out must not be NULL");
+        cloud_set_error(error, error_size, "ply_read_file: path and out must not be NULL");
         return -1;
     }
     memset(out, 0, sizeof *out);
-    file = fopen(path, "rb");
-    if (file == NULL) {
-        set_error(error, error_size, "%s: cannot open for reading", path);
-        return -1;
-    }
-    status = read_header(file, &header, reason, sizeof reason);
-    if (status == 0) status = read_body(file, &header, out, reason, sizeof reason);
-    fclose(file);
-    if (status != 0) {
-        set_error(error, error_size, "%s: %s", path, reason);
+    if (cloud_read_path(path, read_ply, out, error, error_size) != 0) {
         ply_free(out);
         return -1;
     }
-    for (i = 0; i < out->count; ++i)
-        if (isfinite(out->xyz[3 * i]) && isfinite(out->xyz[3 * i + 1]) && isfinite(out->xyz[3 * i + 2]))
-            ++out->finite_count;
+    out->finite_count = cloud_count_finite(out->xyz, out->count);
     return 0;
 }
 
