@@ -9,10 +9,12 @@ Points go to the library without a copy when they are
 Anything else (lists, other dtypes, byte-swapped or column-strided arrays)
 is converted once to a packed float64 (N, 3) array: the one documented copy.
 """
+import ctypes
+
 import numpy as np
 
 from . import _structs as s
-from ._errors import ERROR_INVALID_ARGUMENT, error_for
+from ._errors import ERROR_INVALID_ARGUMENT, BufferTooSmallError, error_for
 
 SCALAR_FLOAT32 = 1
 SCALAR_FLOAT64 = 2
@@ -135,3 +137,22 @@ def triangle_array(triangles, where):
     if arr.size and (arr.min() < 0 or arr.max() > 0xFFFFFFFF):
         raise invalid(f"{where}: a triangle index is out of the uint32 range")
     return np.ascontiguousarray(arr, dtype=np.uint32)
+
+
+def needed_count(function, *leading):
+    """What a sized call ``function(*leading, buffer, capacity, out_count)``
+    needs: it is asked with no buffer and reports the count."""
+    count = ctypes.c_size_t()
+    try:
+        function(*leading, None, 0, ctypes.byref(count))
+    except BufferTooSmallError:
+        pass
+    return count.value
+
+
+def read_array(function, *leading, dtype=np.float64):
+    """The whole output of a sized call as a numpy array of ``dtype``."""
+    out = np.zeros(needed_count(function, *leading), dtype=dtype)
+    count = ctypes.c_size_t()
+    function(*leading, out.ctypes.data, len(out), ctypes.byref(count))
+    return out[:count.value]

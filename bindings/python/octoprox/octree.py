@@ -2,11 +2,9 @@
 import ctypes
 import os
 
-import numpy as np
 
 from . import _structs as s
-from ._arrays import LEAF_DTYPE, point_view
-from ._errors import BufferTooSmallError
+from ._arrays import LEAF_DTYPE, needed_count, point_view, read_array
 from ._handle import Handle
 from ._library import init_struct, lib
 
@@ -101,15 +99,7 @@ class Octree(Handle):
     def leaves(self, class_mask=MASK_OCCUPIED):
         """The leaves of these classes as a structured array (fields center,
         size, probability, cell_class, depth), depth-first."""
-        count = ctypes.c_size_t()
-        try:
-            lib.opx_octree_get_leaves(self, class_mask, None, 0, ctypes.byref(count))
-        except BufferTooSmallError:
-            pass
-        leaves = np.zeros(count.value, dtype=LEAF_DTYPE)
-        lib.opx_octree_get_leaves(self, class_mask, leaves.ctypes.data, len(leaves),
-                                  ctypes.byref(count))
-        return leaves[:count.value]
+        return read_array(lib.opx_octree_get_leaves, self, class_mask, dtype=LEAF_DTYPE)
 
     def save(self, path, format=FORMAT_AUTO):
         """Saves to a .bt or .ot file (format: FORMAT_AUTO, _BT or _OT)."""
@@ -117,11 +107,7 @@ class Octree(Handle):
 
     def to_bytes(self, format=FORMAT_BT):
         """The bytes of a .bt (default) or .ot file."""
-        size = ctypes.c_size_t()
-        try:
-            lib.opx_octree_save_memory(self, format, None, 0, ctypes.byref(size))
-        except BufferTooSmallError:
-            pass
+        size = ctypes.c_size_t(needed_count(lib.opx_octree_save_memory, self, format))
         buffer = ctypes.create_string_buffer(size.value)
         lib.opx_octree_save_memory(self, format, buffer, size.value, ctypes.byref(size))
         return buffer.raw[:size.value]

@@ -1,11 +1,9 @@
 """Query contexts (opx_query): collision, distance and path queries."""
-import ctypes
 
 import numpy as np
 
 from . import _structs as s
-from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, invalid, pose_array, pose_strides
-from ._errors import BufferTooSmallError
+from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, invalid, pose_array, pose_strides, read_array
 from ._handle import Handle
 from ._library import init_struct, lib
 from .linkset import LinkSet
@@ -86,14 +84,7 @@ class Query(Handle):
 
     def link_distances(self):
         """Each link's minimum distance from the last distance query."""
-        count = ctypes.c_size_t()
-        try:
-            lib.opx_query_get_link_distances(self, None, 0, ctypes.byref(count))
-        except BufferTooSmallError:
-            pass
-        out = np.zeros(count.value)
-        lib.opx_query_get_link_distances(self, out.ctypes.data, len(out), ctypes.byref(count))
-        return out[:count.value]
+        return read_array(lib.opx_query_get_link_distances, self)
 
     def path(self, tree, links, poses, **request):
         """Checks a path: poses of shape (waypoints, links, 7) (or 3:

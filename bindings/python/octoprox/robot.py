@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 from . import _structs as s
-from ._errors import BufferTooSmallError
+from ._arrays import read_array
 from ._library import init_struct, lib, make_pose
 
 JOINT_FIXED, JOINT_REVOLUTE, JOINT_CONTINUOUS, JOINT_PRISMATIC, JOINT_FLOATING, \
@@ -88,14 +88,7 @@ class RobotModel:
     @property
     def joint_positions(self):
         """The joint positions in model order, as FK uses them."""
-        count = ctypes.c_size_t()
-        try:
-            lib.opx_linkset_get_joint_positions(self, None, 0, ctypes.byref(count))
-        except BufferTooSmallError:
-            pass
-        out = np.zeros(count.value)
-        lib.opx_linkset_get_joint_positions(self, out.ctypes.data, len(out), ctypes.byref(count))
-        return out
+        return read_array(lib.opx_linkset_get_joint_positions, self)
 
     @property
     def disabled_pairs(self):
