@@ -5,18 +5,6 @@
 
 namespace octoprox {
 
-// The classic magic-number spread: each step doubles the gaps between
-// groups of bits (16, 8, 4, 2, 1 bits apart) until bits sit 3 apart.
-uint64_t morton_spread(uint32_t v) {
-    uint64_t x = v & 0x1FFFFFu;
-    x = (x | (x << 32)) & 0x001F00000000FFFFull;
-    x = (x | (x << 16)) & 0x001F0000FF0000FFull;
-    x = (x | (x << 8)) & 0x100F00F00F00F00Full;
-    x = (x | (x << 4)) & 0x10C30C30C30C30C3ull;
-    x = (x | (x << 2)) & 0x1249249249249249ull;
-    return x;
-}
-
 uint32_t morton_compact(uint64_t code) {
     uint64_t x = code & 0x1249249249249249ull;
     x = (x | (x >> 2)) & 0x10C30C30C30C30C3ull;
@@ -37,12 +25,5 @@ MortonQuantizer::MortonQuantizer(const Aabb &bounds, int bits)
     }
 }
 
-uint32_t MortonQuantizer::quantize(double value, int axis) const {
-    const double cell = std::floor((value - origin_[axis]) * scale_[axis]);
-    // Written so that NaN also lands on cell 0.
-    if (!(cell > 0.0)) return 0;
-    if (cell >= static_cast<double>(max_cell_)) return max_cell_;
-    return static_cast<uint32_t>(cell);
-}
 
 }  // namespace octoprox

@@ -15,8 +15,19 @@ namespace octoprox {
 // At most 21 bits per axis: 63 bits of code fit a uint64_t.
 constexpr int kMaxMortonBits = 21;
 
-// Spreads the low 21 bits of v so that bit i lands in bit 3i.
-uint64_t morton_spread(uint32_t v);
+// Spreads the low 21 bits of v so that bit i lands in bit 3i: the classic
+// magic numbers, each step doubling the gaps between groups of bits (16,
+// 8, 4, 2, 1 bits apart) until bits sit 3 apart.  Inline, as quantize
+// below: the tree build calls both for every box.
+inline uint64_t morton_spread(uint32_t v) {
+    uint64_t x = v & 0x1FFFFFu;
+    x = (x | (x << 32)) & 0x001F00000000FFFFull;
+    x = (x | (x << 16)) & 0x001F0000FF0000FFull;
+    x = (x | (x << 8)) & 0x100F00F00F00F00Full;
+    x = (x | (x << 4)) & 0x10C30C30C30C30C3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+}
 // The inverse of morton_spread: gathers bits 0, 3, 6, ... into the low 21 bits.
 uint32_t morton_compact(uint64_t code);
 
@@ -41,7 +52,14 @@ public:
 
     int bits() const { return bits_; }
     int code_bits() const { return 3 * bits_; }
-    uint32_t quantize(double value, int axis) const;
+    uint32_t quantize(double value, int axis) const {
+        const double cell = (value - origin_[axis]) * scale_[axis];
+        // Below 1 (NaN too) is cell 0; above, truncation is the floor, and
+        // it needs no call into libm.
+        if (!(cell >= 1.0)) return 0;
+        if (cell >= static_cast<double>(max_cell_)) return max_cell_;
+        return static_cast<uint32_t>(cell);
+    }
     uint64_t encode(const Vec3 &point) const {
         return morton_encode(quantize(point.x(), 0), quantize(point.y(), 1), quantize(point.z(), 2));
     }
