@@ -12,6 +12,7 @@
 
 #include "demo_story.h"
 #include "pcd_reader.h"
+#include "shape_mesh.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -83,14 +84,6 @@ static int place_camera_and_links(demo_story *s) {
     return 0;
 }
 
-static void rotate(const double q[4], const double v[3], double out[3]) {
-    const double x = q[0], y = q[1], z = q[2], w = q[3];
-    const double cx = y * v[2] - z * v[1], cy = z * v[0] - x * v[2], cz = x * v[1] - y * v[0];
-    out[0] = v[0] + 2.0 * (w * cx + y * cz - z * cy);
-    out[1] = v[1] + 2.0 * (w * cy + z * cx - x * cz);
-    out[2] = v[2] + 2.0 * (w * cz + x * cy - y * cx);
-}
-
 /* Side view through the right shoulder: x forward, z up. */
 static void side_view(demo_story *s, int quick) {
     static const double top[3] = {0.0, -240.0 / 525.0, 1.0}, bottom[3] = {0.0, 240.0 / 525.0, 1.0};
@@ -108,8 +101,8 @@ static void side_view(demo_story *s, int quick) {
     v->u_name = "X";
     v->v_name = "Z";
     memcpy(s->picture.sensor, s->sensor_pose.position, sizeof s->picture.sensor);
-    rotate(s->sensor_pose.orientation, top, s->picture.fov_edges[0]);
-    rotate(s->sensor_pose.orientation, bottom, s->picture.fov_edges[1]);
+    pose_rotate(s->sensor_pose.orientation, top, s->picture.fov_edges[0]);
+    pose_rotate(s->sensor_pose.orientation, bottom, s->picture.fov_edges[1]);
     s->picture.fov_edge_count = 2;
 }
 

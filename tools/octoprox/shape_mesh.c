@@ -16,7 +16,7 @@ static void normalise(const double q[4], double out[4]) {
     for (i = 0; i < 4; ++i) out[i] = n > 0 ? q[i] / n : (i == 3 ? 1.0 : 0.0);
 }
 
-static void rotate(const double q[4], const double v[3], double out[3]) {
+void pose_rotate(const double q[4], const double v[3], double out[3]) {
     const double x = q[0], y = q[1], z = q[2], w = q[3];
     const double cx = y * v[2] - z * v[1], cy = z * v[0] - x * v[2], cz = x * v[1] - y * v[0];
     out[0] = v[0] + 2.0 * (w * cx + y * cz - z * cy);
@@ -27,7 +27,7 @@ static void rotate(const double q[4], const double v[3], double out[3]) {
 void pose_apply(const opx_pose *pose, const double in[3], double out[3]) {
     double q[4], r[3];
     normalise(pose->orientation, q);
-    rotate(q, in, r);
+    pose_rotate(q, in, r);
     out[0] = r[0] + pose->position[0];
     out[1] = r[1] + pose->position[1];
     out[2] = r[2] + pose->position[2];

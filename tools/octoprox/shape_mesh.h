@@ -16,7 +16,9 @@ void shape_to_mesh(const opx_shape *shape, const opx_pose *link_pose, mesh_out *
  * link l goes to group groups[l] (UINT32_MAX: the link is left out). */
 int linkset_to_mesh(const opx_linkset *links, mesh_out *mesh, const uint32_t *groups);
 
-/* Pose helpers: out = a * b, and a point mapped by a pose. */
+/* Pose helpers: a vector rotated by a unit quaternion (x y z w), out = a * b,
+ * and a point mapped by a pose. */
+void pose_rotate(const double q[4], const double v[3], double out[3]);
 void pose_compose(const opx_pose *a, const opx_pose *b, opx_pose *out);
 void pose_apply(const opx_pose *pose, const double in[3], double out[3]);
 
