@@ -2,12 +2,18 @@
 // `opx-demo --real` puts it (root link at the map origin, head tilted
 // 0.82 rad); both arms reach forward into the sensed scene.  Candidate
 // configurations draw each arm joint uniformly around that reaching pose
-// (clamped to the URDF limits); OctoProx's signed distance (direct engine,
-// signed_distance = 1: minus the deepest penetration) sorts them into
-//   collision set: penetration depth within [min, max] (the paper: 2.8 cm
-//                  on average)
+// (clamped to the URDF limits); OctoProx (direct engine) sorts them into
+//   collision set: colliding, with a penetration depth within [min, max]
+//                  (the paper: 2.8 cm on average)
 //   distance set:  collision-free, distance within [min, max] (paper: 3.4 cm)
 // until each set holds the requested number.
+// Penetration depth: how far the robot must be lifted (translated along
+// +z, the level surface's normal: the head tilt makes the frame's large
+// surface level) to clear the map, by bisection on collision queries.
+// The library's own depth (EPA, signed_distance = 1) is per shape-cell
+// pair: for surface meshes (all of the PR2's arm links) it cannot exceed
+// about a cell's size, however deep the arm reaches through the sensed
+// surface, so it is reported alongside but not used to choose.
 #pragma once
 
 #include <cstdint>
@@ -20,7 +26,8 @@ namespace paper_tables {
 struct Configuration {
     std::vector<double> joints;    // model order (opx_linkset_set_joint_positions)
     std::vector<opx_pose> poses;   // every link's pose after FK, map frame
-    double signed_distance = 0.0;  // metres; < 0: minus the deepest penetration
+    double signed_distance = 0.0;  // metres (opx, signed_distance = 1); < 0: minus the deepest EPA depth
+    double lift_depth = 0.0;       // metres: the lift that clears a colliding configuration
 };
 
 struct ConfigurationSets {
