@@ -9,12 +9,8 @@
 #include <fcl/narrowphase/collision.h>
 
 namespace paper_tables {
-namespace {
 
-using GeometryPtr = std::shared_ptr<fcl::CollisionGeometryd>;
-using MeshModel = fcl::BVHModel<fcl::OBBRSSd>;
-
-GeometryPtr mesh_model(const TriangleMesh &mesh) {
+FclGeometryPtr mesh_model(const TriangleMesh &mesh) {
     std::vector<fcl::Vector3d> points;
     points.reserve(mesh.vertex_count());
     for (size_t i = 0; i < mesh.vertex_count(); ++i)
@@ -23,12 +19,24 @@ GeometryPtr mesh_model(const TriangleMesh &mesh) {
     triangles.reserve(mesh.triangle_count());
     for (size_t i = 0; i < mesh.triangle_count(); ++i)
         triangles.emplace_back(mesh.indices[3 * i], mesh.indices[3 * i + 1], mesh.indices[3 * i + 2]);
-    auto model = std::make_shared<MeshModel>();
+    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
     model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
     model->addSubModel(points, triangles);
     model->endModel();
     return model;
 }
+
+fcl::Transform3d to_transform(const opx_pose &pose) {
+    const double *q = pose.orientation;
+    fcl::Transform3d transform = fcl::Transform3d::Identity();
+    transform.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
+    transform.translation() = fcl::Vector3d(pose.position[0], pose.position[1], pose.position[2]);
+    return transform;
+}
+
+namespace {
+
+using GeometryPtr = FclGeometryPtr;
 
 GeometryPtr primitive_geometry(const SceneObject &object) {
     switch (object.kind) {
@@ -46,14 +54,6 @@ GeometryPtr object_geometry(const SceneObject &object, Variant variant) {
 GeometryPtr cell_geometry(double edge, Variant variant) {
     if (variant == Variant::kPrimitives) return std::make_shared<fcl::Boxd>(edge, edge, edge);
     return mesh_model(make_box(edge, edge, edge));
-}
-
-fcl::Transform3d to_transform(const opx_pose &pose) {
-    const double *q = pose.orientation;
-    fcl::Transform3d transform = fcl::Transform3d::Identity();
-    transform.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
-    transform.translation() = fcl::Vector3d(pose.position[0], pose.position[1], pose.position[2]);
-    return transform;
 }
 
 fcl::Transform3d translation(double x, double y, double z) {

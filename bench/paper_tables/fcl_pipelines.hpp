@@ -16,6 +16,13 @@ namespace paper_tables {
 
 using FclManager = fcl::DynamicAABBTreeCollisionManagerd;
 using FclObjectPtr = std::unique_ptr<fcl::CollisionObjectd>;
+using FclGeometryPtr = std::shared_ptr<fcl::CollisionGeometryd>;
+
+// A triangle mesh as an fcl::BVHModel<OBBRSS> (a surface, as in OctoProx).
+FclGeometryPtr mesh_model(const TriangleMesh &mesh);
+
+// An opx_pose (x y z, qx qy qz qw) as an FCL transform.
+fcl::Transform3d to_transform(const opx_pose &pose);
 
 // Collision objects together with the manager that points into them.
 struct FclObjectSet {

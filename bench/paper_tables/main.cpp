@@ -1,6 +1,6 @@
 // opx-paper-tables: reproduces the tables of the paper's section V with
 // FCL 0.7 and OctoProx on this machine.
-//   opx-paper-tables --table I|II|III [--queries N] [--quick] [--json FILE]
+//   opx-paper-tables --table I|II|III|IV [--queries N] [--quick] [--json FILE]
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -15,12 +15,14 @@ namespace paper_tables {
 namespace {
 
 void print_usage(std::ostream &out) {
-    out << "usage: opx-paper-tables --table I|II|III [--queries N] [--repetitions R] [--quick] [--json FILE]\n"
-           "  --table T        the paper's table to reproduce (implemented: I, II, III)\n"
+    out << "usage: opx-paper-tables --table I|II|III|IV [--queries N] [--repetitions R] [--quick] [--json FILE]\n"
+           "  --table T        the paper's table to reproduce (implemented: I, II, III, IV)\n"
            "  --queries N      T_q is the mean over N identical queries (default 1000; III: 100;\n"
-           "                   I: 1000 at 7,784 cells, at most 100 at 25k-300k)\n"
+           "                   I: 1000 at 7,784 cells, at most 100 at 25k-300k);\n"
+           "                   IV: N PR2 configurations per set (default 100), 3 rounds\n"
            "  --repetitions R  T_{1,1}, T_{1,2} are medians over R builds (default 10; I: 5)\n"
-           "  --quick          smoke run: 20 queries, 1 repetition (checks stay on)\n"
+           "  --quick          smoke run: 20 queries (IV: 5 configurations, 1 round), 1 repetition\n"
+           "                   (checks stay on)\n"
            "  --json FILE      also write the rows as a JSON array\n";
 }
 
@@ -43,7 +45,9 @@ std::string normalized_table(std::string name) {
 }
 
 // Distance queries are slower than collision queries: Table III runs fewer.
-int default_query_count(const std::string &table) { return table == "III" ? 100 : 1000; }
+// Table IV: configurations per set.
+int default_query_count(const std::string &table) { return table == "III" || table == "IV" ? 100 : 1000; }
+int quick_query_count(const std::string &table) { return table == "IV" ? 5 : 20; }
 
 // Returns false (after a message) on a bad command line.
 bool parse_options(int argc, char **argv, BenchOptions &options) {
@@ -66,14 +70,14 @@ bool parse_options(int argc, char **argv, BenchOptions &options) {
             return false;
         }
     }
-    if (!queries_given) options.queries = options.quick ? 20 : default_query_count(options.table);
+    if (!queries_given) options.queries = options.quick ? quick_query_count(options.table) : default_query_count(options.table);
     if (options.table == "I" && !repetitions_given) options.repetitions = 5;
     if (options.quick && !repetitions_given) options.repetitions = 1;
     return true;
 }
 
 int run(const BenchOptions &options) {
-    if (options.table != "I" && options.table != "II" && options.table != "III") {
+    if (options.table != "I" && options.table != "II" && options.table != "III" && options.table != "IV") {
         std::cerr << "opx-paper-tables: table '" << options.table << "' is not implemented (yet)\n";
         return 2;
     }
@@ -81,10 +85,12 @@ int run(const BenchOptions &options) {
     std::cout << "CPU: " << cpu << "\n";
     std::cout << "load average at start: " << load_average() << "\n";
     std::vector<TableRow> rows;
-    // Later tables dispatch here (table4.cpp).  Table I writes its own JSON.
+    // Table I writes its own JSON; 77 is Table IV's "skipped" (no data).
     int status = options.table == "I"     ? run_table1(options, cpu)
                  : options.table == "III" ? run_table3(options, cpu, rows)
+                 : options.table == "IV"  ? run_table4(options, cpu, rows)
                                           : run_table2(options, cpu, rows);
+    if (status == 77) return status;
     if (options.table != "I" && !options.json_path.empty() && !write_json(options.json_path, rows)) {
         std::cerr << "opx-paper-tables: cannot write " << options.json_path << "\n";
         status = status != 0 ? status : 1;
