@@ -50,8 +50,31 @@ double insert_octoprox(const Frame &frame, double resolution, bool raycast, RunR
     return ms;
 }
 
-// The finite points in the map frame, rotated in double (a rotation matrix
-// from the unit quaternion) and rounded to float, as a user would feed OctoMap.
+void keep_octomap_stats(const octomap::OcTree &tree, RunResult *out) {
+    out->occupied = out->free = 0;
+    for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
+        ++(tree.isNodeOccupied(*it) ? out->occupied : out->free);
+    out->leaves = out->occupied + out->free;
+    out->memory_bytes = tree.memoryUsage();
+}
+
+double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, RunResult *keep_stats) {
+    octomap::OcTree tree(resolution);
+    const Clock::time_point start = Clock::now();
+    const octomap::Pointcloud cloud = map_frame_cloud(frame);
+    const octomap::point3d origin(float(frame.position[0]), float(frame.position[1]), float(frame.position[2]));
+    if (pipeline == Pipeline::kOctomapEndpoints)
+        insert_endpoints(tree, cloud);
+    else
+        tree.insertPointCloud(cloud, origin, -1.0, false, pipeline == Pipeline::kOctomapDiscretize);
+    const double ms = elapsed_ms(start);
+    if (keep_stats != nullptr) keep_octomap_stats(tree, keep_stats);
+    return ms;
+}
+
+}  // namespace
+
+// Rotated in double (a rotation matrix from the unit quaternion).
 octomap::Pointcloud map_frame_cloud(const Frame &frame) {
     const double *q = frame.quaternion_xyzw;
     const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -80,30 +103,6 @@ void insert_endpoints(octomap::OcTree &tree, const octomap::Pointcloud &cloud) {
     }
     for (const octomap::OcTreeKey &key : cells) tree.updateNode(key, true, false);
 }
-
-void keep_octomap_stats(const octomap::OcTree &tree, RunResult *out) {
-    out->occupied = out->free = 0;
-    for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it)
-        ++(tree.isNodeOccupied(*it) ? out->occupied : out->free);
-    out->leaves = out->occupied + out->free;
-    out->memory_bytes = tree.memoryUsage();
-}
-
-double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, RunResult *keep_stats) {
-    octomap::OcTree tree(resolution);
-    const Clock::time_point start = Clock::now();
-    const octomap::Pointcloud cloud = map_frame_cloud(frame);
-    const octomap::point3d origin(float(frame.position[0]), float(frame.position[1]), float(frame.position[2]));
-    if (pipeline == Pipeline::kOctomapEndpoints)
-        insert_endpoints(tree, cloud);
-    else
-        tree.insertPointCloud(cloud, origin, -1.0, false, pipeline == Pipeline::kOctomapDiscretize);
-    const double ms = elapsed_ms(start);
-    if (keep_stats != nullptr) keep_octomap_stats(tree, keep_stats);
-    return ms;
-}
-
-}  // namespace
 
 const char *pipeline_name(Pipeline pipeline) {
     switch (pipeline) {

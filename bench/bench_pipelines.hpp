@@ -3,6 +3,8 @@
 
 #include "bench_frame.hpp"
 
+#include <octomap/OcTree.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -30,6 +32,14 @@ struct RunResult {
 // transform to the map frame in double, insert), like the library is.
 // Runs the pipelines round-robin, one insert each per repetition, so that
 // a change of machine load hits them all alike.
+// The finite points of the frame in the map frame (the frame's sensor
+// pose applied in double, rounded to float), as a user would feed OctoMap.
+octomap::Pointcloud map_frame_cloud(const Frame &frame);
+
+// OctoMap's endpoint-only insertion: a KeySet of the endpoint cells, then
+// one updateNode(key, hit) per cell (the baseline of OPX_INSERT_ENDPOINTS).
+void insert_endpoints(octomap::OcTree &tree, const octomap::Pointcloud &cloud);
+
 std::vector<RunResult> run_interleaved(const std::vector<Pipeline> &pipelines, const Frame &frame,
                                        double resolution, bool raycast, int reps);
 

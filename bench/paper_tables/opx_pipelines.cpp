@@ -48,13 +48,17 @@ OpxLinksetPtr make_empty_linkset() {
 
 }  // namespace
 
-OpxQueryPtr make_direct_query() {
+OpxQueryPtr make_query(int32_t engine, uint32_t refine_steps) {
     opx_query_options options = OPX_QUERY_OPTIONS_INIT;
-    options.engine = OPX_ENGINE_DIRECT;
+    options.engine = engine;
+    options.refine_steps = refine_steps;
     opx_query *raw = nullptr;
     check_opx(opx_query_create(&options, &raw), "opx_query_create");
     return OpxQueryPtr(raw);
 }
+
+OpxQueryPtr make_direct_query() { return make_query(OPX_ENGINE_DIRECT); }
+OpxQueryPtr make_amortized_query() { return make_query(OPX_ENGINE_AMORTIZED); }
 
 OpxLinksetPtr make_object_linkset(const std::vector<SceneObject> &objects, Variant variant) {
     OpxLinksetPtr links = make_empty_linkset();

@@ -21,8 +21,12 @@ struct QueryDeleter {
 using OpxLinksetPtr = std::unique_ptr<opx_linkset, LinksetDeleter>;
 using OpxQueryPtr = std::unique_ptr<opx_query, QueryDeleter>;
 
-// A direct-engine query context (OPX_ENGINE_DIRECT).
+// A query context of the given engine (OPX_ENGINE_DIRECT, ...) and
+// refinement paths per query (amortized; 1 is the library's default), and
+// the two contexts the tables use.
+OpxQueryPtr make_query(int32_t engine, uint32_t refine_steps = 1);
 OpxQueryPtr make_direct_query();
+OpxQueryPtr make_amortized_query();
 
 // A link set with one link per object, holding its primitive (variant a)
 // or its mesh (variant b), at the objects' poses.

@@ -65,11 +65,25 @@ double signed_distance(opx_query *query, const opx_octree *tree, const opx_links
     return result.distance;
 }
 
+void forward_kinematics(opx_linkset *robot, const std::vector<double> &joints, const opx_pose &base) {
+    check_opx(opx_linkset_set_joint_positions(robot, joints.data(), joints.size(), &base),
+              "opx_linkset_set_joint_positions");
+}
+
 void forward_kinematics(opx_linkset *robot, const std::vector<double> &joints, double lift) {
     opx_pose base = OPX_POSE_IDENTITY;
     base.position[2] = lift;
-    check_opx(opx_linkset_set_joint_positions(robot, joints.data(), joints.size(), &base),
-              "opx_linkset_set_joint_positions");
+    forward_kinematics(robot, joints, base);
+}
+
+// `start` with each arm joint uniform within +-kSpread of the reaching pose,
+// clamped to its limits.
+std::vector<double> draw_reaching_joints(const std::vector<ArmJoint> &joints, const std::vector<double> &start,
+                                         Rng &rng) {
+    std::vector<double> drawn = start;
+    for (int j = 0; j < kArmJoints; ++j)
+        drawn[joints[j].index] = std::clamp(kReach[j] + rng.uniform(-kSpread, kSpread), joints[j].lower, joints[j].upper);
+    return drawn;
 }
 
 // The smallest lift in [0, kMaxPenetration] found by bisection after which
@@ -123,10 +137,7 @@ ConfigurationSets choose_configurations(opx_linkset *robot, const opx_octree *tr
     const auto full = [&](const std::vector<Configuration> &set) { return static_cast<int>(set.size()) >= count; };
     while ((!full(sets.collision) || !full(sets.distance)) && sets.drawn < kMaxDrawsPerConfiguration * count) {
         Configuration c;
-        c.joints = start;
-        for (int j = 0; j < kArmJoints; ++j)
-            c.joints[joints[j].index] =
-                std::clamp(kReach[j] + rng.uniform(-kSpread, kSpread), joints[j].lower, joints[j].upper);
+        c.joints = draw_reaching_joints(joints, start, rng);
         ++sets.drawn;
         forward_kinematics(robot, c.joints, 0.0);
         if (opx_collides(query.get(), tree, robot)) {
@@ -148,6 +159,21 @@ ConfigurationSets choose_configurations(opx_linkset *robot, const opx_octree *tr
     print_sets(sets, count);
     std::fflush(stdout);
     return sets;
+}
+
+std::vector<Configuration> draw_reaching_configurations(opx_linkset *robot, int count, uint64_t seed,
+                                                        const opx_pose &base) {
+    const std::vector<ArmJoint> joints = arm_joints(robot);
+    const std::vector<double> start = joint_positions(robot);
+    Rng rng(seed);
+    std::vector<Configuration> drawn(count);
+    for (Configuration &c : drawn) {
+        c.joints = draw_reaching_joints(joints, start, rng);
+        forward_kinematics(robot, c.joints, base);
+        c.poses = link_poses(robot);
+    }
+    forward_kinematics(robot, start, 0.0);
+    return drawn;
 }
 
 void apply_configuration(opx_linkset *robot, const Configuration &configuration) {

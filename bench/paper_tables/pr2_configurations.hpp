@@ -42,6 +42,13 @@ struct ConfigurationSets {
 // its starting joint positions.
 ConfigurationSets choose_configurations(opx_linkset *robot, const opx_octree *tree, int count);
 
+// `count` configurations drawn as the candidates above are (each arm joint
+// uniform around the reaching pose, clamped to the URDF limits) from `seed`,
+// with their link poses after FK with the root link at `base` (map frame).
+// No map is consulted; the link set is left at its starting joint positions.
+std::vector<Configuration> draw_reaching_configurations(opx_linkset *robot, int count, uint64_t seed,
+                                                        const opx_pose &base);
+
 // Moves the link set to the configuration's link poses (no FK needed).
 void apply_configuration(opx_linkset *robot, const Configuration &configuration);
 

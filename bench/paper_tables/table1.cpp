@@ -58,15 +58,6 @@ std::unique_ptr<FclManager> manage_at_level(const std::vector<FclObjectPtr> &obj
     return manager;
 }
 
-OpxQueryPtr make_query(int32_t engine, uint32_t refine_steps) {
-    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
-    options.engine = engine;
-    options.refine_steps = refine_steps;
-    opx_query *raw = nullptr;
-    check_opx(opx_query_create(&options, &raw), "opx_query_create");
-    return OpxQueryPtr(raw);
-}
-
 double sah_ratio(opx_query *query) {
     opx_query_stats stats = OPX_QUERY_STATS_INIT;
     check_opx(opx_query_get_stats(query, &stats), "opx_query_get_stats");

@@ -58,14 +58,6 @@ struct Bench {
     double amortized_t11 = 0.0, amortized_t12 = 0.0;
 };
 
-OpxQueryPtr make_amortized_query() {
-    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
-    options.engine = OPX_ENGINE_AMORTIZED;
-    opx_query *raw = nullptr;
-    check_opx(opx_query_create(&options, &raw), "opx_query_create");
-    return OpxQueryPtr(raw);
-}
-
 // Fresh amortized contexts, each bound to the map by one query; the
 // medians of their own build times; the last context serves the queries.
 void build_amortized(Bench &bench, int repetitions) {
