@@ -17,10 +17,23 @@ double DirectDistance::lower_bound(int32_t robot_node, const Aabb &cell) const {
     return std::max(boxes, shape_lower_bound(links_->placed()[robot.item], cell));
 }
 
+// What the obstacles of a cell's subtree can be nearest at: the box of its
+// obstacle leaves when the map keeps it for this query, else its cube.
+Aabb DirectDistance::bounding_box(const Cell &cell) const {
+    if (use_obstacle_boxes_ && cell.node != nullptr && view_->has_children(cell.node)) {
+        const uint32_t packed = view_->packed_obstacle_bounds(cell.node);
+        if (packed != 0) return obstacle_box(cell, packed);
+    }
+    return cell.box;
+}
+
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
+    // The boxes hold the leaves at or above the map's threshold: a query
+    // with a higher threshold has fewer obstacles, a lower one more.
+    use_obstacle_boxes_ = !settings.unknown_occupied && settings.threshold_log_odds >= view_->bounds_threshold();
     (void)tree;
 }
 
@@ -61,7 +74,7 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
 void DirectDistance::search(int32_t robot_node) {
     const Cell root = root_cell(*view_);
     if (root.node == nullptr && !settings_.unknown_occupied) return;
-    recurse(root, robot_node, lower_bound(robot_node, root.box));
+    recurse(root, robot_node, lower_bound(robot_node, bounding_box(root)));
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by
@@ -90,7 +103,8 @@ void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower)
         return descend_octree(cell, robot_node);
     // Nearer robot child first.
     int32_t first = robot.left, second = robot.right;
-    double lower_first = lower_bound(first, cell.box), lower_second = lower_bound(second, cell.box);
+    const Aabb cell_bound = bounding_box(cell);
+    double lower_first = lower_bound(first, cell_bound), lower_second = lower_bound(second, cell_bound);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
     recurse(cell, first, lower_first);
     recurse(cell, second, lower_second);
@@ -113,7 +127,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
         const Cell child = child_cell(cell, node, i, mid);
-        const Child entry{child, lower_bound(robot_node, child.box)};
+        const Child entry{child, lower_bound(robot_node, bounding_box(child))};
         if (can_prune(entry.lower)) continue;
         // Insertion sort: at most 8 children.
         int at = count++;

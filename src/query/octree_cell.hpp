@@ -7,6 +7,8 @@
 #include "geometry/aabb.hpp"
 #include "octree/octree_view.hpp"
 
+#include <cmath>
+
 namespace octoprox {
 
 struct OctreeCell {
@@ -37,6 +39,21 @@ inline OctreeCell child_cell(const OctreeCell &cell, OctreeView::NodeRef child, 
         else c.box.hi[axis] = mid[axis];
     }
     return c;
+}
+
+// The part of an inner cell's cube holding its obstacle leaves, from the
+// view's packed slots (bounded_tree.hpp), padded outwards by far more than
+// rounding so it always contains every obstacle leaf's exact box.
+inline Aabb obstacle_box(const OctreeCell &cell, uint32_t packed) {
+    constexpr double kSlot = 1.0 / 32;
+    const Vec3 width = cell.box.hi - cell.box.lo;
+    Aabb box;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double pad = 1e-12 * (std::abs(cell.box.lo[axis]) + width[axis]);
+        box.lo[axis] = cell.box.lo[axis] + width[axis] * (kSlot * ((packed >> (5 * axis)) & 31)) - pad;
+        box.hi[axis] = cell.box.lo[axis] + width[axis] * (kSlot * (((packed >> (15 + 5 * axis)) & 31) + 1)) + pad;
+    }
+    return box;
 }
 
 // The children (bit i for child i) that a box overlapping the parent can
