@@ -63,7 +63,7 @@ struct Checker {
         // The box the engines use contains every obstacle leaf's exact box.
         const double res = view.resolution();
         const octoprox::OctreeCell whole{nullptr, cell, octoprox::cell_box(cell, res)};
-        const octoprox::Aabb box = octoprox::obstacle_box(whole, packed);
+        const octoprox::Aabb box = octoprox::obstacle_box(whole, packed, octoprox::obstacle_box_pad(res));
         for (int a = 0; a < 3; ++a) {
             EXPECT_LE(box.lo[a], (leaves.lo[a] - octoprox::kKeyCenter) * res);
             EXPECT_GE(box.hi[a], (leaves.hi[a] - octoprox::kKeyCenter) * res);
