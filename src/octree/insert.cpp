@@ -5,7 +5,7 @@
 
 #include "capi/error.hpp"
 
-#include <octomap/OcTree.h>
+#include "octree/bounded_tree.hpp"
 
 #include <cmath>
 
@@ -63,7 +63,8 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
         for (const auto &p : cloud) occupied_cells.insert(tree_->coordToKey(p));
     }
     // The same order as OctoMap's insertPointCloud, so the float log-odds
-    // sums are identical.
+    // sums are identical.  The scope keeps the inner obstacle boxes.
+    const BoundsScope scope(occupied_log_odds_);
     for (const auto &key : free_cells) tree_->updateNode(key, false, false);
     for (const auto &key : occupied_cells) tree_->updateNode(key, true, false);
     grow_known_bounds(free_cells);

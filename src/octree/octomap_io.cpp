@@ -3,7 +3,7 @@
 #include "capi/error.hpp"
 #include "octree/octree_view.hpp"
 
-#include <octomap/OcTree.h>
+#include "octree/bounded_tree.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -136,7 +136,7 @@ std::unique_ptr<SensorOctree> read_map_body(const std::string &body, MapFormat f
     check_resolution(resolution);
     BodyValidator(body, format).validate();
     params.resolution = resolution;
-    auto tree = std::make_unique<octomap::OcTree>(resolution);
+    auto tree = std::make_unique<BoundedOcTree>(resolution);
     // Leaves of a .bt file take the clamping bounds as their values.
     tree->setClampingThresMin(params.clamp_min);
     tree->setClampingThresMax(params.clamp_max);
@@ -144,9 +144,6 @@ std::unique_ptr<SensorOctree> read_map_body(const std::string &body, MapFormat f
         std::istringstream in(body);
         if (format == MapFormat::kBinary) tree->readBinaryData(in);
         else tree->readData(in);
-        // Inner nodes must hold the max of their children (the root is left
-        // at clamp_max by OctoMap's binary reader; a .ot may be stale).
-        tree->updateInnerOccupancy();
     }
     return std::make_unique<SensorOctree>(params, std::move(tree));
 }
@@ -169,7 +166,7 @@ std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, Octr
 // The bodies come from OctoMap's node writers; its writeBinaryData would
 // also print a debug line to stderr in Debian's build.
 std::string write_map_file_bytes(const SensorOctree &tree, MapFormat format) {
-    const octomap::OcTree &octree = tree.octomap_tree();
+    const BoundedOcTree &octree = tree.octomap_tree();
     char resolution[64];
     const auto written = std::to_chars(resolution, resolution + sizeof resolution - 1,
                                        octree.getResolution());

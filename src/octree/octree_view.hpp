@@ -3,8 +3,10 @@
 // Query engines see the map only through this class: nodes as opaque
 // references, children by index, log-odds per node (an inner node holds the
 // maximum of its children, which makes pruning by threshold safe), and cell
-// geometry from integer keys.  The storage behind it is OctoMap's OcTree
-// today; replacing it means rewriting octree_view_octomap.inl only.
+// geometry from integer keys, and for inner nodes the part of their cube
+// that holds their obstacle leaves.  The storage behind it is OctoMap's
+// occupancy octree (bounded_tree.hpp); replacing it means rewriting
+// octree_view_octomap.inl only.
 #pragma once
 
 #include <cstdint>
@@ -42,17 +44,24 @@ class OctreeView {
 public:
     using NodeRef = const void *;
 
-    explicit OctreeView(const void *octomap_tree);
+    // bounds_threshold: the log-odds the map's obstacle boxes are kept for.
+    OctreeView(const void *bounded_tree, float bounds_threshold);
 
     double resolution() const { return resolution_; }
     NodeRef root() const;                       // nullptr when the map is empty
     bool has_children(NodeRef node) const;
     NodeRef child(NodeRef node, int index) const;  // nullptr: unknown space
     float log_odds(NodeRef node) const;
+    // For a node with children: its obstacle box packed as in
+    // bounded_tree.hpp (0 when not known).  Valid for a query whose
+    // obstacles are leaves at or above a threshold >= bounds_threshold().
+    uint32_t packed_obstacle_bounds(NodeRef node) const;
+    float bounds_threshold() const { return bounds_threshold_; }
 
 private:
     const void *tree_;
     double resolution_;
+    float bounds_threshold_;
 };
 
 }  // namespace octoprox

@@ -1,31 +1,36 @@
-// OctreeView over octomap::OcTree (inline: the engines call these per node).
+// OctreeView over our OctoMap occupancy octree (inline: the engines call
+// these per node).
 #pragma once
 
-#include <octomap/OcTree.h>
+#include "octree/bounded_tree.hpp"
 
 namespace octoprox {
 
-inline OctreeView::OctreeView(const void *octomap_tree)
-    : tree_(octomap_tree),
-      resolution_(static_cast<const octomap::OcTree *>(octomap_tree)->getResolution()) {}
+inline OctreeView::OctreeView(const void *bounded_tree, float bounds_threshold)
+    : tree_(bounded_tree),
+      resolution_(static_cast<const BoundedOcTree *>(bounded_tree)->getResolution()),
+      bounds_threshold_(bounds_threshold) {}
 
 inline OctreeView::NodeRef OctreeView::root() const {
-    return static_cast<const octomap::OcTree *>(tree_)->getRoot();
+    return static_cast<const BoundedOcTree *>(tree_)->getRoot();
 }
 
 inline bool OctreeView::has_children(NodeRef node) const {
-    return static_cast<const octomap::OcTree *>(tree_)->nodeHasChildren(
-        static_cast<const octomap::OcTreeNode *>(node));
+    return static_cast<const BoundedOcTree *>(tree_)->nodeHasChildren(static_cast<const BoundedNode *>(node));
 }
 
 inline OctreeView::NodeRef OctreeView::child(NodeRef node, int index) const {
-    const auto *tree = static_cast<const octomap::OcTree *>(tree_);
-    const auto *n = static_cast<const octomap::OcTreeNode *>(node);
+    const auto *tree = static_cast<const BoundedOcTree *>(tree_);
+    const auto *n = static_cast<const BoundedNode *>(node);
     return tree->nodeChildExists(n, index) ? tree->getNodeChild(n, index) : nullptr;
 }
 
 inline float OctreeView::log_odds(NodeRef node) const {
-    return static_cast<const octomap::OcTreeNode *>(node)->getLogOdds();
+    return static_cast<const BoundedNode *>(node)->getLogOdds();
+}
+
+inline uint32_t OctreeView::packed_obstacle_bounds(NodeRef node) const {
+    return static_cast<const BoundedNode *>(node)->packed_bounds();
 }
 
 }  // namespace octoprox

@@ -3,7 +3,7 @@
 #include "capi/error.hpp"
 #include "octree/traverse.hpp"
 
-#include <octomap/OcTree.h>
+#include "octree/bounded_tree.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -54,13 +54,18 @@ Vec3 PointSource::read(size_t index) const {
 }
 
 SensorOctree::SensorOctree(const OctreeParams &params)
-    : params_(params), tree_(std::make_unique<octomap::OcTree>(params.resolution)) {
+    : params_(params), tree_(std::make_unique<BoundedOcTree>(params.resolution)) {
     apply_params();
 }
 
-SensorOctree::SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::OcTree> tree)
+SensorOctree::SensorOctree(const OctreeParams &params, std::unique_ptr<BoundedOcTree> tree)
     : params_(params), tree_(std::move(tree)) {
     apply_params();
+    // Inner nodes must hold the max of their children (OctoMap's binary
+    // reader leaves the root at clamp_max; a .ot may be stale) and their
+    // obstacle boxes, which no file carries.
+    const BoundsScope scope(occupied_log_odds_);
+    tree_->updateInnerOccupancy();
     recompute_known_bounds();
 }
 

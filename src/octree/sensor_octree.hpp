@@ -1,5 +1,5 @@
-// The sensor octree behind an opx_octree handle: OctoMap's OcTree with our
-// parameters, the cell classes of the paper (occupied / uncertain / free /
+// The sensor octree behind an opx_octree handle: OctoMap's occupancy octree
+// (with obstacle boxes in its inner nodes, bounded_tree.hpp) and our parameters, the cell classes of the paper (occupied / uncertain / free /
 // unknown) and sensor-frame insertion.
 #pragma once
 
@@ -14,11 +14,9 @@
 #include <cstdint>
 #include <memory>
 
-namespace octomap {
-class OcTree;
-}
-
 namespace octoprox {
+
+class BoundedOcTree;
 
 enum CellClass : int { kUnknown = 0, kFree = 1, kUncertain = 2, kOccupied = 3 };
 
@@ -64,12 +62,13 @@ class SensorOctree {
 public:
     explicit SensorOctree(const OctreeParams &params);
     // Adopts a tree read from a file; params.resolution must be its resolution.
-    SensorOctree(const OctreeParams &params, std::unique_ptr<octomap::OcTree> tree);
+    // Its inner nodes are recomputed (values and obstacle boxes).
+    SensorOctree(const OctreeParams &params, std::unique_ptr<BoundedOcTree> tree);
     ~SensorOctree();
 
     const OctreeParams &params() const { return params_; }
-    OctreeView view() const { return OctreeView(tree_.get()); }
-    const octomap::OcTree &octomap_tree() const { return *tree_; }
+    OctreeView view() const { return OctreeView(tree_.get(), occupied_log_odds_); }
+    const BoundedOcTree &octomap_tree() const { return *tree_; }
 
     int classify_log_odds(float log_odds) const {
         if (log_odds >= occupied_log_odds_) return kOccupied;
@@ -96,7 +95,7 @@ private:
     void recompute_known_bounds();
 
     OctreeParams params_;
-    std::unique_ptr<octomap::OcTree> tree_;
+    std::unique_ptr<BoundedOcTree> tree_;
     // Thresholds as float log-odds, compared with the stored float log-odds
     // exactly as OctoMap's isNodeOccupied does.
     float occupied_log_odds_ = 0.0f;

@@ -15,6 +15,9 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
     outcome_ = CollisionOutcome();
     done_ = false;
     obstacles_settled_ = false;
+    use_obstacle_boxes_ = !settings.unknown_occupied && !settings.cost &&
+                          settings.threshold_log_odds >= view.bounds_threshold();
+    box_pad_ = obstacle_box_pad(view.resolution());
     if (!links.tree().empty()) {
         const Cell root = root_cell(view);
         // An empty map is one unknown cube.
@@ -40,8 +43,9 @@ void DirectCollider::recurse(const Cell &cell, int32_t robot_node) {
     // the cube is twice the robot node's size (measured: fewer visits).
     if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
-    if (tree.node(robot.left).box.overlaps(cell.box)) recurse(cell, robot.left);
-    if (tree.node(robot.right).box.overlaps(cell.box)) recurse(cell, robot.right);
+    const Aabb cell_bound = bounding_box(cell);
+    if (tree.node(robot.left).box.overlaps(cell_bound)) recurse(cell, robot.left);
+    if (tree.node(robot.right).box.overlaps(cell_bound)) recurse(cell, robot.right);
 }
 
 // Only the children the robot node's box reaches, skipping those that hold
@@ -56,7 +60,9 @@ void DirectCollider::descend_octree(const Cell &cell, int32_t robot_node) {
         const int i = __builtin_ctz(bits);
         const Cell child = child_cell(cell, view_->child(cell.node, i), i, mid);
         if (skip_child(child)) continue;
-        if (shape != nullptr && !shape_may_touch(*shape, child.box)) continue;
+        const Aabb child_bound = bounding_box(child);
+        if (!robot.box.overlaps(child_bound)) continue;
+        if (shape != nullptr && !shape_may_touch(*shape, child_bound)) continue;
         recurse(child, robot_node);
     }
 }

@@ -31,6 +31,10 @@ private:
     void test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box);
     void record(const Cell &cell, const PlacedShape &shape);
     void settle_obstacles();
+    // Where a cell's obstacles can lie (octree_cell.hpp obstacle_bounds).
+    Aabb bounding_box(const Cell &cell) const {
+        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_);
+    }
 
     const OctreeView *view_ = nullptr;
     const SensorOctree *tree_ = nullptr;
@@ -41,6 +45,11 @@ private:
     CostCollector cost_;
     bool done_ = false;
     bool obstacles_settled_ = false;  // no more contact information needed
+    // The map's obstacle boxes hold for this query: obstacles are leaves at
+    // or above its threshold, and cost (which also looks for uncertain and
+    // unknown cells) is off.
+    bool use_obstacle_boxes_ = false;
+    double box_pad_ = 0.0;
 };
 
 }  // namespace octoprox

@@ -10,17 +10,27 @@
 namespace octoprox {
 
 // Box distance, tightened by the shape itself when the node is one shape.
+// A pair the boxes already put beyond the bound returns that distance
+// (pruned by can_prune) without the square root or the shape's own test.
 double DirectDistance::lower_bound(int32_t robot_node, const Aabb &cell) const {
     const AabbTreeNode &robot = links_->tree().node(robot_node);
-    const double boxes = std::sqrt(robot.box.squared_distance(cell));
+    const double squared = robot.box.squared_distance(cell);
+    if (bound_ > 1e-100 && squared >= bound_ * bound_) return bound_;  // no underflow
+    const double boxes = std::sqrt(squared);
     if (!robot.is_leaf()) return boxes;
-    return std::max(boxes, shape_lower_bound(links_->placed()[robot.item], cell));
+    const PlacedShape &shape = links_->placed()[robot.item];
+    // A mesh's own bound is its box: already taken.
+    return shape.kind == ShapeKind::kMesh ? boxes : std::max(boxes, shape_lower_bound(shape, cell));
 }
 
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
+    // The boxes hold the leaves at or above the map's threshold: a query
+    // with a higher threshold has fewer obstacles, a lower one more.
+    use_obstacle_boxes_ = !settings.unknown_occupied && settings.threshold_log_odds >= view_->bounds_threshold();
+    box_pad_ = obstacle_box_pad(view_->resolution());
     (void)tree;
 }
 
@@ -61,7 +71,7 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
 void DirectDistance::search(int32_t robot_node) {
     const Cell root = root_cell(*view_);
     if (root.node == nullptr && !settings_.unknown_occupied) return;
-    recurse(root, robot_node, lower_bound(robot_node, root.box));
+    recurse(root, robot_node, lower_bound(robot_node, bounding_box(root)));
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by
@@ -90,7 +100,8 @@ void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower)
         return descend_octree(cell, robot_node);
     // Nearer robot child first.
     int32_t first = robot.left, second = robot.right;
-    double lower_first = lower_bound(first, cell.box), lower_second = lower_bound(second, cell.box);
+    const Aabb cell_bound = bounding_box(cell);
+    double lower_first = lower_bound(first, cell_bound), lower_second = lower_bound(second, cell_bound);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
     recurse(cell, first, lower_first);
     recurse(cell, second, lower_second);
@@ -105,6 +116,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
     const Vec3 mid = mid_planes(cell, view_->resolution());
     const unsigned reached = std::isfinite(bound_) ? children_overlapping(reach, mid) : 0xFFu;
     Child children[8];
+    int order[8];  // indices into children, nearest first
     int count = 0;
     for (unsigned bits = reached; bits != 0; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
@@ -112,15 +124,16 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
         if (node == nullptr ? !settings_.unknown_occupied
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
-        const Cell child = child_cell(cell, node, i, mid);
-        const Child entry{child, lower_bound(robot_node, child.box)};
+        Child &entry = children[count];
+        entry.cell = child_cell(cell, node, i, mid);
+        entry.lower = lower_bound(robot_node, bounding_box(entry.cell));
         if (can_prune(entry.lower)) continue;
-        // Insertion sort: at most 8 children.
-        int at = count++;
-        for (; at > 0 && children[at - 1].lower > entry.lower; --at) children[at] = children[at - 1];
-        children[at] = entry;
+        // Insertion sort of indices: at most 8 children.
+        int at = count;
+        for (; at > 0 && children[order[at - 1]].lower > entry.lower; --at) order[at] = order[at - 1];
+        order[at] = count++;
     }
-    for (int i = 0; i < count; ++i) recurse(children[i].cell, robot_node, children[i].lower);
+    for (int i = 0; i < count; ++i) recurse(children[order[i]].cell, robot_node, children[order[i]].lower);
 }
 
 void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {

@@ -36,6 +36,9 @@ private:
     bool can_prune(double lower) const;
     bool is_obstacle(const Cell &cell) const;
     double lower_bound(int32_t robot_node, const Aabb &cell) const;
+    Aabb bounding_box(const Cell &cell) const {
+        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_);
+    }
 
     const OctreeView *view_ = nullptr;
     const LinkSet *links_ = nullptr;
@@ -43,6 +46,8 @@ private:
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance
     int32_t only_link_ = -1;         // per-link mode: the link searched
+    bool use_obstacle_boxes_ = false;  // the map's inner obstacle boxes hold for this query
+    double box_pad_ = 0.0;
 };
 
 }  // namespace octoprox

@@ -39,6 +39,32 @@ inline OctreeCell child_cell(const OctreeCell &cell, OctreeView::NodeRef child, 
     return c;
 }
 
+// The part of an inner cell's cube holding its obstacle leaves, from the
+// view's packed slots (bounded_tree.hpp), padded outwards by `pad` (see
+// obstacle_box_pad) so it always contains every obstacle leaf's exact box.
+inline Aabb obstacle_box(const OctreeCell &cell, uint32_t packed, double pad) {
+    const double slot = (cell.box.hi.x() - cell.box.lo.x()) * (1.0 / 32);
+    const Vec3 lo_slots(packed & 31, (packed >> 5) & 31, (packed >> 10) & 31);
+    const Vec3 hi_slots(((packed >> 15) & 31) + 1, ((packed >> 20) & 31) + 1, ((packed >> 25) & 31) + 1);
+    return Aabb{(cell.box.lo + slot * lo_slots).array() - pad, (cell.box.lo + slot * hi_slots).array() + pad};
+}
+
+// Thousands of times the rounding error of any coordinate in the map cube
+// (|x| <= kKeyCenter * resolution), and still far below a micrometre.
+inline double obstacle_box_pad(double resolution) { return 1e-12 * kKeyCenter * resolution; }
+
+// What the obstacles of a cell's subtree can lie in: the box of its
+// obstacle leaves when `use_boxes` (the query's obstacles are leaves at or
+// above a threshold >= the view's bounds_threshold) and the node keeps one,
+// else its cube.
+inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad) {
+    if (use_boxes && cell.node != nullptr && view.has_children(cell.node)) {
+        const uint32_t packed = view.packed_obstacle_bounds(cell.node);
+        if (packed != 0) return obstacle_box(cell, packed, pad);
+    }
+    return cell.box;
+}
+
 // The children (bit i for child i) that a box overlapping the parent can
 // overlap, from the sides of the mid-planes it reaches (closed boxes).
 inline unsigned children_overlapping(const Aabb &box, const Vec3 &mid) {

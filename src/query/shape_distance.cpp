@@ -36,19 +36,31 @@ bool convex_distance(const Convex &core, double inflation, const Vec3 &center, c
     return true;
 }
 
-// Nearest-first over the mesh's triangle tree.
+// Nearest-first over the mesh's triangle tree.  Nodes carry the squared
+// distance of their box to the cell, computed once when pushed; a node is
+// skipped when that distance minus the inflation reaches the bound.
 bool mesh_distance(const PlacedShape &shape, const Vec3 &center, const Vec3 &half, double bound,
                    ShapeCellDistance &out, uint64_t &narrow_tests) {
     const AabbTree &tree = shape.mesh_tree;
     const Aabb cell = Aabb::from_center(center, half);
+    // Squares only where they cannot underflow (signed queries search with
+    // a bound of 1e-300).
+    auto beyond = [&](double squared) {
+        const double reach = bound + shape.inflation;
+        if (reach <= 0.0) return true;
+        return reach > 1e-100 ? squared >= reach * reach : std::sqrt(squared) >= reach;
+    };
     bool found = false;
-    int32_t stack[64];
+    struct Entry {
+        int32_t node;
+        double squared;
+    } stack[64];
     int top = 0;
-    stack[top++] = tree.root();
+    stack[top++] = {tree.root(), tree.node(tree.root()).box.squared_distance(cell)};
     while (top > 0) {
-        const AabbTreeNode &node = tree.node(stack[--top]);
-        const double lower = std::sqrt(node.box.squared_distance(cell)) - shape.inflation;
-        if (lower >= bound) continue;
+        const Entry entry = stack[--top];
+        if (beyond(entry.squared)) continue;
+        const AabbTreeNode &node = tree.node(entry.node);
         if (node.is_leaf()) {
             ++narrow_tests;
             ShapeCellDistance candidate;
@@ -59,10 +71,11 @@ bool mesh_distance(const PlacedShape &shape, const Vec3 &center, const Vec3 &hal
             continue;
         }
         // Push the farther child first so the nearer one is popped first.
-        const AabbTreeNode &l = tree.node(node.left), &r = tree.node(node.right);
-        const bool left_nearer = l.box.squared_distance(cell) <= r.box.squared_distance(cell);
-        stack[top++] = left_nearer ? node.right : node.left;
-        stack[top++] = left_nearer ? node.left : node.right;
+        const Entry left{node.left, tree.node(node.left).box.squared_distance(cell)};
+        const Entry right{node.right, tree.node(node.right).box.squared_distance(cell)};
+        const bool left_nearer = left.squared <= right.squared;
+        stack[top++] = left_nearer ? right : left;
+        stack[top++] = left_nearer ? left : right;
     }
     return found;
 }

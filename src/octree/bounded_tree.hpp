@@ -1,0 +1,77 @@
+// OctoMap's occupancy octree, with one more fact in every inner node: the
+// part of its cube that holds its obstacle leaves (leaves at or above the
+// map's occupancy threshold).  The distance and collision engines bound a
+// subtree by that box instead of its whole cube, which prunes most of the
+// nodes a nearest-first search would otherwise open.
+//
+// The box costs no memory: it is packed into the 4 bytes of padding after
+// OcTreeNode's float (16 bytes a node either way).  It is kept up to date
+// by the same calls that keep OctoMap's inner max log-odds up to date
+// (updateOccupancyChildren, along every changed path), so there is no
+// per-frame pass over the map.
+//
+// Packing: per axis, the lowest and highest 1/32nd of the cube that holds
+// an obstacle leaf (5 bits each, six fields), and a validity bit.  A box
+// is only computed inside a BoundsScope (which says the threshold); a node
+// updated outside one is marked invalid, and the engines then use its cube.
+#pragma once
+
+#include <octomap/OccupancyOcTreeBase.h>
+#include <octomap/OcTreeNode.h>
+
+#include <cstdint>
+#include <string>
+
+namespace octoprox {
+
+namespace bounds {
+constexpr int kSlots = 32;                   // a cube's edge is cut into 32 slots
+constexpr uint32_t kValid = 1u << 31;
+constexpr uint32_t kFull = kValid | 0x3FFF8000u;  // lo = 0, hi = 31 on every axis
+
+inline int lo(uint32_t packed, int axis) { return (packed >> (5 * axis)) & 31; }
+inline int hi(uint32_t packed, int axis) { return (packed >> (15 + 5 * axis)) & 31; }
+}  // namespace bounds
+
+class BoundedNode : public octomap::OcTreeNode {
+public:
+    // OctoMap's templates call these on the node type (they are not
+    // virtual): pruning copies a child's data up, expanding copies it down.
+    void copyData(const BoundedNode &from) {
+        octomap::OcTreeNode::copyData(from);
+        packed_bounds_ = from.packed_bounds_;
+    }
+    // The max log-odds of the children (as OctoMap's) and the obstacle box.
+    void updateOccupancyChildren();
+
+    // Meaningful for nodes with children only; 0 when not valid.
+    uint32_t packed_bounds() const { return packed_bounds_; }
+
+private:
+    uint32_t packed_bounds_ = 0;
+};
+
+// While one is alive on this thread, inner-node updates compute obstacle
+// boxes for leaves with log-odds >= threshold.  Every change our code makes
+// to a map runs inside one (the map's threshold is fixed at creation).
+class BoundsScope {
+public:
+    explicit BoundsScope(float threshold_log_odds);
+    ~BoundsScope();
+    BoundsScope(const BoundsScope &) = delete;
+    BoundsScope &operator=(const BoundsScope &) = delete;
+
+private:
+    bool was_active_;
+    float previous_;
+};
+
+class BoundedOcTree : public octomap::OccupancyOcTreeBase<BoundedNode> {
+public:
+    explicit BoundedOcTree(double resolution) : octomap::OccupancyOcTreeBase<BoundedNode>(resolution) {}
+    // The same type name as OctoMap's OcTree: the files we write are theirs.
+    std::string getTreeType() const override { return "OcTree"; }
+    BoundedOcTree *create() const override { return new BoundedOcTree(resolution); }
+};
+
+}  // namespace octoprox
