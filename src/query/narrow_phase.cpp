@@ -27,6 +27,7 @@ bool convex_within(const Convex &core, double limit, const Vec3 &center, const V
 // Depth-first over the mesh's triangle tree, with the cell grown by the limit.
 bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, const Vec3 &half,
                  uint64_t &narrow_tests) {
+    shape.place_mesh();
     const AabbTree &tree = shape.mesh_tree;
     const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));
     int32_t stack[64];

@@ -41,6 +41,7 @@ bool convex_distance(const Convex &core, double inflation, const Vec3 &center, c
 // skipped when that distance minus the inflation reaches the bound.
 bool mesh_distance(const PlacedShape &shape, const Vec3 &center, const Vec3 &half, double bound,
                    ShapeCellDistance &out, uint64_t &narrow_tests) {
+    shape.place_mesh();
     const AabbTree &tree = shape.mesh_tree;
     const Aabb cell = Aabb::from_center(center, half);
     // Squares only where they cannot underflow (signed queries search with

@@ -52,6 +52,7 @@ ShapePenetration core_penetration(const Convex &core, double inflation, const Ve
 }
 
 ShapePenetration mesh_penetration(const PlacedShape &shape, const Vec3 &center, const Vec3 &half) {
+    shape.place_mesh();
     const AabbTree &tree = shape.mesh_tree;
     const double limit = shape.inflation + kTouchTolerance;
     const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));

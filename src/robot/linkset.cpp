@@ -59,9 +59,13 @@ void LinkSet::set_link_enabled(uint32_t link, bool enabled) {
 
 // The first poses after the shapes changed also rebuild the topology: a
 // tree built with every link at the origin would cull nothing.  Later
-// poses only refit it.
+// poses only refit it, and skip the links whose pose is bit for bit the
+// one they are placed at: a planner moving one arm leaves the base, torso
+// and head where they are, and placing a mesh (every vertex, then its
+// triangle tree) is most of the cost of a new configuration.
 void LinkSet::set_poses(const std::vector<Pose> &poses) {
     for (uint32_t i = 0; i < links_.size(); ++i) {
+        if (topology_from_poses_ && same_pose(links_[i].pose, poses[i])) continue;
         links_[i].pose = poses[i];
         place_link(i);
     }
@@ -71,6 +75,10 @@ void LinkSet::set_poses(const std::vector<Pose> &poses) {
         build_topology();
         topology_from_poses_ = true;
     }
+}
+
+bool LinkSet::same_pose(const Pose &a, const Pose &b) {
+    return a.rotation == b.rotation && a.translation == b.translation;
 }
 
 void LinkSet::place_link(uint32_t index) {

@@ -1,7 +1,9 @@
 // A robot as links with shapes, paddings, enabled flags and map-frame
 // poses, and the BVH over all placed shapes that queries traverse.  Every
-// change brings the placed shapes and the BVH up to date at once, so a
-// const LinkSet is always ready to query (from any number of threads).
+// change brings the shapes' boxes and the BVH up to date at once, so a
+// const LinkSet is always ready to query (from any number of threads); a
+// mesh's vertices and triangle tree follow when a query first reaches the
+// mesh (PlacedShape::place_mesh, thread-safe).
 #pragma once
 
 #include "robot/shape.hpp"
@@ -51,6 +53,7 @@ public:
 
 private:
     void place_link(uint32_t link);
+    static bool same_pose(const Pose &a, const Pose &b);
     void rebuild();  // after the set of shapes changed
     void build_topology();
     void refit();    // after boxes changed

@@ -1,5 +1,7 @@
 #include "robot/shape.hpp"
 
+#include "robot/mesh_bounds.hpp"
+
 namespace octoprox {
 namespace {
 
@@ -31,12 +33,12 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
                       core.half.x() * std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));
         return Aabb::from_center(core.center, half);
     }
-    case ShapeKind::kConvex:
-    case ShapeKind::kMesh: {
+    case ShapeKind::kConvex: {
         Aabb box;
         for (const Vec3 &v : s.world_vertices) box.grow(v);
         return box;
     }
+    case ShapeKind::kMesh: return mesh_world_box(def, core.axes, core.center);
     }
     return Aabb();
 }
@@ -47,6 +49,18 @@ void build_mesh_tree(ShapeDef &def) {
     std::vector<Aabb> boxes;
     triangle_boxes(def.vertices, def.triangles, boxes);
     def.mesh_tree.build(boxes);
+}
+
+void PlacedShape::place_mesh() const {
+    if (mesh_placement.done.load(std::memory_order_acquire)) return;
+    std::lock_guard<std::mutex> guard(mesh_placement.lock);
+    if (mesh_placement.done.load(std::memory_order_relaxed)) return;
+    world_vertices.resize(def->vertices.size());
+    for (size_t i = 0; i < def->vertices.size(); ++i) world_vertices[i] = core.axes * def->vertices[i] + core.center;
+    if (mesh_tree.size() != def->mesh_tree.size()) mesh_tree = def->mesh_tree;
+    triangle_boxes(world_vertices, def->triangles, triangle_box_scratch);
+    mesh_tree.refit(triangle_box_scratch);
+    mesh_placement.done.store(true, std::memory_order_release);
 }
 
 Convex PlacedShape::triangle(int32_t index) const {
@@ -87,7 +101,6 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
         out.core.half = Vec3(def.radius, def.radius, def.half_length);
         break;
     case ShapeKind::kConvex:
-    case ShapeKind::kMesh:
         out.world_vertices.resize(def.vertices.size());
         for (size_t i = 0; i < def.vertices.size(); ++i)
             out.world_vertices[i] = rotation * def.vertices[i] + center;
@@ -95,11 +108,10 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
         out.core.hull = out.world_vertices.data();
         out.core.hull_count = out.world_vertices.size();
         break;
-    }
-    if (def.kind == ShapeKind::kMesh) {
-        if (out.mesh_tree.size() != def.mesh_tree.size()) out.mesh_tree = def.mesh_tree;
-        triangle_boxes(out.world_vertices, def.triangles, out.triangle_box_scratch);
-        out.mesh_tree.refit(out.triangle_box_scratch);
+    case ShapeKind::kMesh:
+        out.core.kind = ConvexKind::kHull;  // never read as a whole: queries go through the triangles
+        out.mesh_placement.done.store(false, std::memory_order_release);
+        break;
     }
     out.box = Aabb();
     if (enabled) {

@@ -11,6 +11,8 @@
 #include "geometry/convex.hpp"
 
 #include <array>
+#include <atomic>
+#include <mutex>
 #include <cstdint>
 #include <vector>
 
@@ -32,18 +34,39 @@ struct ShapeDef {
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.
 void build_mesh_tree(ShapeDef &def);
 
+// A mesh's placement in the map frame is done by the first query that
+// reaches the mesh, once per pose, under a lock: queries on one link set
+// may run in many threads, and most meshes of a robot are never reached by
+// a query (their box touches no obstacle).  A copy starts unplaced.
+struct LazyPlacement {
+    std::atomic<bool> done{false};
+    std::mutex lock;
+    LazyPlacement() = default;
+    LazyPlacement(const LazyPlacement &) {}
+    LazyPlacement &operator=(const LazyPlacement &) {
+        done.store(false);
+        return *this;
+    }
+};
+
 struct PlacedShape {
     uint32_t link = 0, shape = 0;
     ShapeKind kind = ShapeKind::kSphere;
     double inflation = 0.0;  // radius of the ball added to the core
-    Convex core;             // every kind but mesh
-    Aabb box;                // bounds of the inflated shape; empty when disabled
-    std::vector<Vec3> world_vertices;  // convex hull and mesh, map frame
-    AabbTree mesh_tree;                // mesh: refit in the map frame
-    std::vector<Aabb> triangle_box_scratch;  // mesh: reused by every placement
+    Convex core;             // every kind but mesh (a mesh's core holds only its pose: center, axes)
+    Aabb box;                // bounds of the inflated shape (exact for every kind); empty when disabled
+    // Convex hull: map frame.  Mesh: map frame once place_mesh() ran.
+    mutable std::vector<Vec3> world_vertices;
+    mutable AabbTree mesh_tree;                        // mesh: refit in the map frame by place_mesh()
+    mutable std::vector<Aabb> triangle_box_scratch;    // mesh: reused by every placement
+    mutable LazyPlacement mesh_placement;
     const ShapeDef *def = nullptr;
 
-    // A triangle of the mesh as a convex core.
+    // Mesh: places the vertices and refits the triangle tree at the current
+    // pose unless done already.  Call it before reading world_vertices,
+    // mesh_tree or triangle() of a mesh; thread-safe.
+    void place_mesh() const;
+    // A triangle of the (placed) mesh as a convex core.
     Convex triangle(int32_t index) const;
 };
 

@@ -1,0 +1,119 @@
+// Meshes are placed lazily: a pose update computes only a mesh's box (by
+// branch-and-bound over its triangle tree), and the first query reaching
+// the mesh places its vertices and refits its tree, once, from any number
+// of threads.  Checked: the box is bit for bit the placed vertices' box;
+// a new pose unplaces the mesh, an unchanged pose keeps it placed; threads
+// placing one mesh together all read the same vertices.
+#include "robot/linkset.hpp"
+#include "robot/mesh_bounds.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace octoprox;
+
+// A random triangle soup of `triangles` triangles over `vertices` points,
+// one point never used by a triangle (it must not count in the box).
+ShapeDef random_mesh(std::mt19937_64 &rng, int vertices, int triangles) {
+    std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
+    ShapeDef def;
+    def.kind = ShapeKind::kMesh;
+    for (int i = 0; i < vertices; ++i) def.vertices.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+    def.vertices.emplace_back(5.0, 5.0, 5.0);  // unused
+    std::uniform_int_distribution<uint32_t> pick(0, static_cast<uint32_t>(vertices - 1));
+    for (int t = 0; t < triangles; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
+    build_mesh_tree(def);
+    return def;
+}
+
+Pose random_pose(std::mt19937_64 &rng) {
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+    Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+    q.normalize();
+    Pose pose;
+    pose.rotation = q.toRotationMatrix();
+    pose.translation = Vec3(coordinate(rng), coordinate(rng), coordinate(rng));
+    return pose;
+}
+
+Aabb placed_box(const ShapeDef &def, const Pose &pose) {
+    Aabb box;
+    for (const auto &t : def.triangles)
+        for (uint32_t v : t) box.grow(Vec3(pose.rotation * def.vertices[v] + pose.translation));
+    return box;
+}
+
+TEST(MeshPlacement, BoxIsThePlacedVerticesBoxExactly) {
+    std::mt19937_64 rng(7);
+    for (int trial = 0; trial < 200; ++trial) {
+        const ShapeDef def = random_mesh(rng, 3 + trial * 5, 1 + trial * 7);
+        const Pose pose = random_pose(rng);
+        const Aabb expected = placed_box(def, pose);
+        const Aabb box = mesh_world_box(def, pose.rotation, pose.translation);
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_EQ(box.lo[axis], expected.lo[axis]) << "trial " << trial << " axis " << axis;
+            EXPECT_EQ(box.hi[axis], expected.hi[axis]) << "trial " << trial << " axis " << axis;
+        }
+    }
+}
+
+// One link holding one mesh, posed.
+struct MeshLink {
+    LinkSet links;
+    explicit MeshLink(std::mt19937_64 &rng) {
+        links.add_shape(links.add_link("mesh"), random_mesh(rng, 400, 700));
+    }
+    const PlacedShape &shape() const { return links.placed()[0]; }
+    bool placed() const { return shape().mesh_placement.done.load(); }
+};
+
+TEST(MeshPlacement, PosesUnplaceOnlyWhenTheyChange) {
+    std::mt19937_64 rng(11);
+    MeshLink mesh(rng);
+    const Pose first = random_pose(rng), second = random_pose(rng);
+    mesh.links.set_poses({first});
+    mesh.links.set_poses({first});
+    EXPECT_FALSE(mesh.placed()) << "a pose update must not place a mesh's vertices";
+    mesh.shape().place_mesh();
+    ASSERT_TRUE(mesh.placed());
+    EXPECT_EQ(mesh.shape().mesh_tree.node(0).box.lo, placed_box(*mesh.shape().def, first).lo);
+    mesh.links.set_poses({first});
+    EXPECT_TRUE(mesh.placed()) << "an unchanged pose keeps the placement";
+    mesh.links.set_poses({second});
+    EXPECT_FALSE(mesh.placed()) << "a new pose must unplace the mesh";
+    mesh.shape().place_mesh();
+    EXPECT_EQ(mesh.shape().mesh_tree.node(0).box.hi, placed_box(*mesh.shape().def, second).hi);
+    EXPECT_EQ(mesh.shape().box.hi, placed_box(*mesh.shape().def, second).hi);
+}
+
+TEST(MeshPlacement, ThreadsPlacingTogetherReadTheSameVertices) {
+    std::mt19937_64 rng(13);
+    MeshLink mesh(rng);
+    for (int round = 0; round < 20; ++round) {
+        const Pose pose = random_pose(rng);
+        mesh.links.set_poses({pose});
+        const ShapeDef &def = *mesh.shape().def;
+        std::vector<int> wrong(8, 0);
+        std::vector<std::thread> threads;
+        for (int t = 0; t < 8; ++t) {
+            threads.emplace_back([&, t] {
+                mesh.shape().place_mesh();
+                for (size_t i = 0; i < def.triangles.size(); ++i) {
+                    const Convex triangle = mesh.shape().triangle(static_cast<int32_t>(i));
+                    for (int k = 0; k < 3; ++k)
+                        wrong[t] += triangle.v[k] != Vec3(pose.rotation * def.vertices[def.triangles[i][k]] + pose.translation);
+                }
+            });
+        }
+        for (std::thread &thread : threads) thread.join();
+        for (int t = 0; t < 8; ++t) EXPECT_EQ(wrong[t], 0) << "round " << round << " thread " << t;
+    }
+}
+
+}  // namespace
