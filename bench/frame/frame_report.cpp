@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "report.hpp"
 #include "timing.hpp"
 
 namespace frame_bench {

@@ -39,12 +39,16 @@ auto timed(RunState &state, Pipeline p, double &ms, Work &&work) {
     return answer;
 }
 
+opx_linkset *robot_links(RunState &state, Pipeline p) {
+    return p == kDirect ? state.robot.links : state.robot.links_amortized;
+}
+
 void move_robot(RunState &state, Pipeline p, const Configuration &c, StageTimes &times) {
     timed(state, p, times[kPoseUpdate], [&] {
         if (p == kFcl) {
             state.robot.fcl->set_link_poses(c.poses);
         } else {
-            check_opx(opx_linkset_set_joint_positions(state.robot.links, c.joints.data(), c.joints.size(),
+            check_opx(opx_linkset_set_joint_positions(robot_links(state, p), c.joints.data(), c.joints.size(),
                                                       &state.robot.base),
                       "opx_linkset_set_joint_positions");
         }
@@ -54,17 +58,18 @@ void move_robot(RunState &state, Pipeline p, const Configuration &c, StageTimes 
 
 opx_query *engine(RunState &state, Pipeline p) { return p == kDirect ? state.direct.get() : state.amortized.get(); }
 
+
 bool collide(RunState &state, Pipeline p, StageTimes &times) {
     return timed(state, p, times[kCollision], [&] {
         if (p == kFcl) return paper_tables::fcl_octree_collides(state.robot.fcl->manager(), *state.octree);
-        return paper_tables::opx_collides(engine(state, p), state.opx.raycast(), state.robot.links);
+        return paper_tables::opx_collides(engine(state, p), state.opx.raycast(), robot_links(state, p));
     });
 }
 
 double distance(RunState &state, Pipeline p, StageTimes &times) {
     return timed(state, p, times[kDistance], [&] {
         if (p == kFcl) return paper_tables::fcl_octree_distance(state.robot.fcl->manager(), *state.octree);
-        return paper_tables::opx_min_distance(engine(state, p), state.opx.raycast(), state.robot.links);
+        return paper_tables::opx_min_distance(engine(state, p), state.opx.raycast(), robot_links(state, p));
     });
 }
 
@@ -77,7 +82,7 @@ void ingest(RunState &state, std::array<StageTimes, kPipelineCount> &times) {
 
 void build_structures(RunState &state, std::array<StageTimes, kPipelineCount> &times) {
     timed(state, kAmortized, times[kAmortized][kStructure],
-          [&] { return paper_tables::opx_collides(state.amortized.get(), state.opx.raycast(), state.robot.links); });
+          [&] { return paper_tables::opx_collides(state.amortized.get(), state.opx.raycast(), state.robot.links_amortized); });
     timed(state, kFcl, times[kFcl][kStructure], [&] {
         state.octree = paper_tables::wrap_octree(state.octomap.raycast());
         return 0;

@@ -37,7 +37,8 @@ struct RunPlan {
 // The PR2 on both sides and the configurations, drawn once for a stream
 // (same set for every pipeline, resolution and frame).
 struct Robot {
-    opx_linkset *links = nullptr;
+    opx_linkset *links = nullptr;        // octoprox direct's PR2
+    opx_linkset *links_amortized = nullptr;  // a clone: each engine moves its own robot, as each thread would
     paper_tables::FclRobot *fcl = nullptr;
     std::vector<paper_tables::Configuration> configurations;  // link poses at the stream's base
     opx_pose base = OPX_POSE_IDENTITY;

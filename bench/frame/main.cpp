@@ -89,7 +89,7 @@ bool parse_options(int argc, char **argv, Options &options) {
 
 // The robot on both sides, built once; their heap is reported.
 struct Robots {
-    paper_tables::OpxLinksetPtr links;
+    paper_tables::OpxLinksetPtr links, links_amortized;
     std::unique_ptr<paper_tables::FclRobot> fcl;
     size_t heap_opx = 0, heap_fcl = 0;
 };
@@ -97,6 +97,9 @@ struct Robots {
 Robots load_robots() {
     Robots robots;
     robots.heap_opx = measure_heap([&] { robots.links = paper_tables::load_pr2(); }).peak_above_start;
+    opx_linkset *clone = nullptr;
+    paper_tables::check_opx(opx_linkset_clone(robots.links.get(), &clone), "opx_linkset_clone");
+    robots.links_amortized.reset(clone);
     robots.heap_fcl = measure_heap([&] { robots.fcl = std::make_unique<paper_tables::FclRobot>(robots.links.get()); })
                           .peak_above_start;
     return robots;
@@ -128,7 +131,7 @@ std::vector<RunResult> run_plans(const Options &options, Robots &robots) {
         if (plan.stream != current) {
             current = plan.stream;
             stream = make_stream(plan.stream, robots);
-            robot = Robot{robots.links.get(), robots.fcl.get(), {}, stream.robot_base};
+            robot = Robot{robots.links.get(), robots.links_amortized.get(), robots.fcl.get(), {}, stream.robot_base};
             robot.configurations = paper_tables::draw_reaching_configurations(robots.links.get(), options.queries,
                                                                               kConfigurationSeed, stream.robot_base);
             print_stream(stream, robot);
