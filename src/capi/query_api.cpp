@@ -170,7 +170,7 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         result.narrow_tests = outcome.narrow_tests;
         query->cost_boxes.clear();
         if (settings.cost) {
-            link_boxes(links->links, query->link_boxes);
+            link_boxes(links->links, query->direct.cost(), query->link_boxes);
             const CostSummary cost = query->direct.cost().finish(query->link_boxes, settings.max_cost_boxes, query->cost_boxes);
             result.total_cost = cost.total;
             result.cost_boxes_found = cost.box_count;

@@ -58,9 +58,17 @@ CostSummary keep_costliest(std::vector<CostBox> &boxes, uint32_t keep) {
     return summary;
 }
 
-void link_boxes(const LinkSet &links, std::vector<Aabb> &out) {
+void CostCollector::mark_links(std::vector<uint8_t> &wanted) const {
+    for (const Pair &p : pairs_) wanted[p.link] = 1;
+}
+
+// Only the links with pairs: an exact mesh box places the mesh.
+void link_boxes(const LinkSet &links, const CostCollector &cost, std::vector<Aabb> &out) {
     out.assign(links.link_count(), Aabb());
-    for (const PlacedShape &shape : links.placed()) out[shape.link].grow(shape.box);
+    std::vector<uint8_t> wanted(links.link_count(), 0);
+    cost.mark_links(wanted);
+    for (const PlacedShape &shape : links.placed())
+        if (wanted[shape.link]) out[shape.link].grow(shape.exact_box());
 }
 
 }  // namespace octoprox

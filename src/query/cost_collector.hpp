@@ -37,6 +37,8 @@ public:
     // keep_flat keeps boxes of no volume (a path merges them first).
     CostSummary finish(const std::vector<Aabb> &link_boxes, uint32_t keep, std::vector<CostBox> &out,
                        bool keep_flat = false);
+    // Sets wanted[link] for every link some pair involves.
+    void mark_links(std::vector<uint8_t> &wanted) const;
 
 private:
     struct Pair {
@@ -53,8 +55,10 @@ private:
 // `keep` costliest, costliest first.
 CostSummary keep_costliest(std::vector<CostBox> &boxes, uint32_t keep);
 
-// Bounding box of each link (union of its enabled shapes' padded boxes).
+// Bounding box of each link that has a pair in `cost` (the union of its
+// enabled shapes' exact padded boxes: PlacedShape::exact_box); the other
+// links' boxes are left empty.
 class LinkSet;
-void link_boxes(const LinkSet &links, std::vector<Aabb> &out);
+void link_boxes(const LinkSet &links, const CostCollector &cost, std::vector<Aabb> &out);
 
 }  // namespace octoprox

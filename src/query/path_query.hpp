@@ -62,7 +62,7 @@ PathOutcome PathQuery::run(const SensorOctree &tree, const LinkSet &links, size_
         out.narrow_tests += hit.narrow_tests;
         if (hit.collided && out.first_collision < 0) out.first_collision = static_cast<int64_t>(w);
         if (collision.cost) {
-            link_boxes(moving, link_boxes_);
+            link_boxes(moving, collider_.cost(), link_boxes_);
             collider_.cost().finish(link_boxes_, UINT32_MAX, waypoint_boxes_, true);
             merge_cost(waypoint_boxes_);
         }

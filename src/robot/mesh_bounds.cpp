@@ -1,60 +1,36 @@
 #include "robot/mesh_bounds.hpp"
 
-#include <cmath>
-#include <limits>
-
 namespace octoprox {
-namespace {
 
-// The largest sign * (rotation * v + center)[axis] over the mesh's
-// vertices, by branch-and-bound over its triangle tree (shape frame): a
-// node's box bounds the value by centre and half extent, and nodes that
-// cannot beat the best vertex found (by more than the bound's rounding)
-// are skipped.  Vertices are placed by the same expression as
-// PlacedShape::place_mesh, so the box is bit for bit theirs.  The
-// higher-bounded child goes first: about one descent finds the extreme.
-double extreme(const ShapeDef &def, const Eigen::Matrix3d &rotation, const Vec3 &center, int axis, double sign) {
-    const AabbTree &tree = def.mesh_tree;
-    const Vec3 dir = sign * rotation.row(axis).transpose();
-    const Vec3 abs_dir = dir.cwiseAbs();
-    const double offset = sign * center[axis];
-    const double slack = 1e-12 * (1.0 + center.cwiseAbs().maxCoeff() + tree.node(tree.root()).box.half_extent().norm());
-    const auto bound = [&](int32_t index) {
-        const Aabb &box = tree.node(index).box;
-        return offset + dir.dot(box.center()) + abs_dir.dot(box.half_extent()) + slack;
-    };
-    double best = -std::numeric_limits<double>::infinity();
-    int32_t stack[64];
-    int top = 0;
-    stack[top++] = tree.root();
-    while (top > 0) {
-        const int32_t index = stack[--top];
-        if (bound(index) < best) continue;
-        const AabbTreeNode &node = tree.node(index);
-        if (node.is_leaf()) {
-            for (uint32_t v : def.triangles[node.item]) {
-                const Vec3 placed = rotation * def.vertices[v] + center;
-                best = std::max(best, sign * placed[axis]);
-            }
-            continue;
+std::vector<Aabb> mesh_frontier_boxes(const AabbTree &tree) {
+    std::vector<Aabb> boxes;
+    if (tree.empty()) return boxes;
+    std::vector<int32_t> level{tree.root()}, next;
+    for (int depth = 0; depth < kFrontierDepth; ++depth) {
+        next.clear();
+        for (int32_t index : level) {
+            const AabbTreeNode &node = tree.node(index);
+            if (node.is_leaf()) boxes.push_back(node.box);
+            else next.push_back(node.left), next.push_back(node.right);
         }
-        const bool left_first = bound(node.left) >= bound(node.right);
-        stack[top++] = left_first ? node.right : node.left;
-        stack[top++] = left_first ? node.left : node.right;
+        level.swap(next);
     }
-    return best;
+    for (int32_t index : level) boxes.push_back(tree.node(index).box);
+    return boxes;
 }
 
-}  // namespace
-
-Aabb mesh_world_box(const ShapeDef &def, const Eigen::Matrix3d &rotation, const Vec3 &center) {
-    Aabb box;
-    if (def.mesh_tree.empty()) return box;
-    for (int axis = 0; axis < 3; ++axis) {
-        box.hi[axis] = extreme(def, rotation, center, axis, 1.0);
-        box.lo[axis] = -extreme(def, rotation, center, axis, -1.0);
+Aabb placed_frontier_box(const std::vector<Aabb> &boxes, const Eigen::Matrix3d &rotation, const Vec3 &center) {
+    const Eigen::Matrix3d spread = rotation.cwiseAbs();
+    Aabb placed;
+    for (const Aabb &box : boxes) {
+        const Vec3 middle = rotation * box.center() + center;
+        const Vec3 half = spread * box.half_extent();
+        placed.grow(Aabb::from_center(middle, half));
     }
-    return box;
+    if (placed.empty()) return placed;
+    // Rounding of the rotation here and of the vertices in place_mesh.
+    placed.inflate(1e-12 * (1.0 + center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
+    return placed;
 }
 
 }  // namespace octoprox

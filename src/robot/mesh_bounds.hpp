@@ -1,14 +1,21 @@
-// The exact axis-aligned box of a mesh at a pose, without placing its
-// vertices: a pose update moves many meshes that no query then reaches.
+// Bounds of a mesh at a pose without placing its vertices: a pose update
+// moves many meshes that no query then reaches.
 #pragma once
 
-#include "robot/shape.hpp"
+#include "broadphase/aabb_tree.hpp"
+
+#include <vector>
 
 namespace octoprox {
 
-// Bounds of `def`'s triangles' vertices after p -> rotation * p + center,
-// exactly those of the vertices PlacedShape::place_mesh computes; empty
-// without triangles.  def's triangle tree must be built.
-Aabb mesh_world_box(const ShapeDef &def, const Eigen::Matrix3d &rotation, const Vec3 &center);
+// The boxes of the tree's nodes kFrontierDepth levels below the root (or
+// the leaves above that depth): together they hold every item.
+constexpr int kFrontierDepth = 4;
+std::vector<Aabb> mesh_frontier_boxes(const AabbTree &tree);
+
+// The union of the boxes after p -> rotation * p + center (each placed as
+// the axis-aligned box of the rotated box): it holds every point the boxes
+// hold, up to rounding, which a relative pad of 1e-12 covers.
+Aabb placed_frontier_box(const std::vector<Aabb> &boxes, const Eigen::Matrix3d &rotation, const Vec3 &center);
 
 }  // namespace octoprox

@@ -38,7 +38,7 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
         for (const Vec3 &v : s.world_vertices) box.grow(v);
         return box;
     }
-    case ShapeKind::kMesh: return mesh_world_box(def, core.axes, core.center);
+    case ShapeKind::kMesh: return placed_frontier_box(def.frontier_boxes, core.axes, core.center);
     }
     return Aabb();
 }
@@ -49,6 +49,7 @@ void build_mesh_tree(ShapeDef &def) {
     std::vector<Aabb> boxes;
     triangle_boxes(def.vertices, def.triangles, boxes);
     def.mesh_tree.build(boxes);
+    def.frontier_boxes = mesh_frontier_boxes(def.mesh_tree);
 }
 
 void PlacedShape::place_mesh() const {
@@ -60,7 +61,17 @@ void PlacedShape::place_mesh() const {
     if (mesh_tree.size() != def->mesh_tree.size()) mesh_tree = def->mesh_tree;
     triangle_boxes(world_vertices, def->triangles, triangle_box_scratch);
     mesh_tree.refit(triangle_box_scratch);
+    mesh_vertex_box = Aabb();
+    for (const Vec3 &v : world_vertices) mesh_vertex_box.grow(v);
     mesh_placement.done.store(true, std::memory_order_release);
+}
+
+Aabb PlacedShape::exact_box() const {
+    if (kind != ShapeKind::kMesh || box.empty()) return box;
+    place_mesh();
+    Aabb exact = mesh_vertex_box;
+    exact.inflate(inflation);
+    return exact;
 }
 
 Convex PlacedShape::triangle(int32_t index) const {

@@ -29,6 +29,11 @@ struct ShapeDef {
     std::vector<Vec3> vertices;     // convex, mesh (shape frame)
     std::vector<std::array<uint32_t, 3>> triangles;  // mesh
     AabbTree mesh_tree;             // mesh: topology over the triangles, built once
+    // Mesh: the boxes of the triangle tree's nodes a few levels down (at
+    // most 16, shape frame).  Placed, their union bounds the mesh a little
+    // loosely for the price of a few dozen flops each, where the exact box
+    // needs every vertex.
+    std::vector<Aabb> frontier_boxes;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.
@@ -54,18 +59,25 @@ struct PlacedShape {
     ShapeKind kind = ShapeKind::kSphere;
     double inflation = 0.0;  // radius of the ball added to the core
     Convex core;             // every kind but mesh (a mesh's core holds only its pose: center, axes)
-    Aabb box;                // bounds of the inflated shape (exact for every kind); empty when disabled
+    // Bounds of the inflated shape, empty when disabled: exact for every
+    // kind but mesh, whose box is the union of its placed frontier boxes
+    // (bounds for culling; exact_box() gives the tight one).
+    Aabb box;
     // Convex hull: map frame.  Mesh: map frame once place_mesh() ran.
     mutable std::vector<Vec3> world_vertices;
     mutable AabbTree mesh_tree;                        // mesh: refit in the map frame by place_mesh()
     mutable std::vector<Aabb> triangle_box_scratch;    // mesh: reused by every placement
     mutable LazyPlacement mesh_placement;
+    mutable Aabb mesh_vertex_box;                      // mesh: of the placed vertices, by place_mesh()
     const ShapeDef *def = nullptr;
 
     // Mesh: places the vertices and refits the triangle tree at the current
     // pose unless done already.  Call it before reading world_vertices,
     // mesh_tree or triangle() of a mesh; thread-safe.
     void place_mesh() const;
+    // The tightest box of the inflated shape (a mesh: of all its placed
+    // vertices, placing it); empty when disabled.  Cost boxes use it.
+    Aabb exact_box() const;
     // A triangle of the (placed) mesh as a convex core.
     Convex triangle(int32_t index) const;
 };

@@ -1,11 +1,11 @@
-// Meshes are placed lazily: a pose update computes only a mesh's box (by
-// branch-and-bound over its triangle tree), and the first query reaching
-// the mesh places its vertices and refits its tree, once, from any number
-// of threads.  Checked: the box is bit for bit the placed vertices' box;
-// a new pose unplaces the mesh, an unchanged pose keeps it placed; threads
-// placing one mesh together all read the same vertices.
+// Meshes are placed lazily: a pose update computes only a bounding box
+// from a few of the mesh's tree nodes, and the first query reaching the
+// mesh places its vertices and refits its tree, once, from any number of
+// threads.  Checked: the box holds every placed vertex, the exact box is
+// bit for bit the placed vertices' box; a new pose unplaces the mesh, an
+// unchanged pose keeps it placed; threads placing one mesh together all
+// read the same vertices.
 #include "robot/linkset.hpp"
-#include "robot/mesh_bounds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,14 +17,12 @@ namespace {
 
 using namespace octoprox;
 
-// A random triangle soup of `triangles` triangles over `vertices` points,
-// one point never used by a triangle (it must not count in the box).
+// A random triangle soup of `triangles` triangles over `vertices` points.
 ShapeDef random_mesh(std::mt19937_64 &rng, int vertices, int triangles) {
     std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
     ShapeDef def;
     def.kind = ShapeKind::kMesh;
     for (int i = 0; i < vertices; ++i) def.vertices.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    def.vertices.emplace_back(5.0, 5.0, 5.0);  // unused
     std::uniform_int_distribution<uint32_t> pick(0, static_cast<uint32_t>(vertices - 1));
     for (int t = 0; t < triangles; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
     build_mesh_tree(def);
@@ -42,6 +40,7 @@ Pose random_pose(std::mt19937_64 &rng) {
     return pose;
 }
 
+// The box of the placed triangles' vertices.
 Aabb placed_box(const ShapeDef &def, const Pose &pose) {
     Aabb box;
     for (const auto &t : def.triangles)
@@ -49,29 +48,44 @@ Aabb placed_box(const ShapeDef &def, const Pose &pose) {
     return box;
 }
 
-TEST(MeshPlacement, BoxIsThePlacedVerticesBoxExactly) {
-    std::mt19937_64 rng(7);
-    for (int trial = 0; trial < 200; ++trial) {
-        const ShapeDef def = random_mesh(rng, 3 + trial * 5, 1 + trial * 7);
-        const Pose pose = random_pose(rng);
-        const Aabb expected = placed_box(def, pose);
-        const Aabb box = mesh_world_box(def, pose.rotation, pose.translation);
-        for (int axis = 0; axis < 3; ++axis) {
-            EXPECT_EQ(box.lo[axis], expected.lo[axis]) << "trial " << trial << " axis " << axis;
-            EXPECT_EQ(box.hi[axis], expected.hi[axis]) << "trial " << trial << " axis " << axis;
-        }
-    }
+// The box of every placed vertex, used by a triangle or not (the exact box
+// a cost box is cut from, as before meshes were placed lazily).
+Aabb placed_vertex_box(const ShapeDef &def, const Pose &pose) {
+    Aabb box;
+    for (const Vec3 &v : def.vertices) box.grow(Vec3(pose.rotation * v + pose.translation));
+    return box;
 }
 
 // One link holding one mesh, posed.
 struct MeshLink {
     LinkSet links;
-    explicit MeshLink(std::mt19937_64 &rng) {
-        links.add_shape(links.add_link("mesh"), random_mesh(rng, 400, 700));
-    }
+    explicit MeshLink(ShapeDef def) { links.add_shape(links.add_link("mesh"), std::move(def)); }
+    explicit MeshLink(std::mt19937_64 &rng) : MeshLink(random_mesh(rng, 400, 700)) {}
     const PlacedShape &shape() const { return links.placed()[0]; }
     bool placed() const { return shape().mesh_placement.done.load(); }
 };
+
+bool holds(const Aabb &outer, const Aabb &inner) {
+    return (outer.lo.array() <= inner.lo.array()).all() && (inner.hi.array() <= outer.hi.array()).all();
+}
+
+TEST(MeshPlacement, BoxHoldsThePlacedMeshAndTheExactBoxIsItsBox) {
+    std::mt19937_64 rng(7);
+    for (int trial = 0; trial < 200; ++trial) {
+        MeshLink mesh(random_mesh(rng, 3 + trial * 5, 1 + trial * 7));
+        const Pose pose = random_pose(rng);
+        mesh.links.set_poses({pose});
+        EXPECT_TRUE(holds(mesh.shape().box, placed_box(*mesh.shape().def, pose))) << "trial " << trial;
+        const Aabb expected = placed_vertex_box(*mesh.shape().def, pose);
+        EXPECT_FALSE(mesh.placed());
+        const Aabb exact = mesh.shape().exact_box();
+        EXPECT_TRUE(mesh.placed());
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_EQ(exact.lo[axis], expected.lo[axis]) << "trial " << trial << " axis " << axis;
+            EXPECT_EQ(exact.hi[axis], expected.hi[axis]) << "trial " << trial << " axis " << axis;
+        }
+    }
+}
 
 TEST(MeshPlacement, PosesUnplaceOnlyWhenTheyChange) {
     std::mt19937_64 rng(11);
@@ -89,7 +103,7 @@ TEST(MeshPlacement, PosesUnplaceOnlyWhenTheyChange) {
     EXPECT_FALSE(mesh.placed()) << "a new pose must unplace the mesh";
     mesh.shape().place_mesh();
     EXPECT_EQ(mesh.shape().mesh_tree.node(0).box.hi, placed_box(*mesh.shape().def, second).hi);
-    EXPECT_EQ(mesh.shape().box.hi, placed_box(*mesh.shape().def, second).hi);
+    EXPECT_EQ(mesh.shape().exact_box().hi, placed_vertex_box(*mesh.shape().def, second).hi);
 }
 
 TEST(MeshPlacement, ThreadsPlacingTogetherReadTheSameVertices) {
