@@ -7,8 +7,11 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <unordered_map>
 
 namespace octoprox {
 namespace {
@@ -40,18 +43,38 @@ void append_node(const aiScene &scene, const aiNode &node, const Eigen::Matrix4d
     for (unsigned i = 0; i < node.mNumChildren; ++i) append_node(scene, *node.mChildren[i], transform, out);
 }
 
-// Drops vertices no triangle uses (they would only widen the bounds) and
-// rejects non-finite coordinates.
+// The bits of a vertex: equal positions weld, whatever their normals or
+// colours made the file keep apart.
+struct PositionHash {
+    size_t operator()(const std::array<uint64_t, 3> &bits) const {
+        return std::hash<uint64_t>()(bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^ bits[2]);
+    }
+};
+
+std::array<uint64_t, 3> position_bits(const Vec3 &v) {
+    std::array<uint64_t, 3> bits;
+    for (int i = 0; i < 3; ++i) {
+        const double coordinate = v[i] == 0.0 ? 0.0 : v[i];  // -0 welds with +0
+        std::memcpy(&bits[i], &coordinate, sizeof coordinate);
+    }
+    return bits;
+}
+
+// Drops vertices no triangle uses (they would only widen the bounds),
+// welds vertices at the same position (files split them by normal; every
+// pose update would place each copy), and rejects non-finite coordinates.
 void keep_used_vertices(TriangleMesh &mesh, const std::string &path) {
     std::vector<uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
+    std::unordered_map<std::array<uint64_t, 3>, uint32_t, PositionHash> welded;
     std::vector<Vec3> used;
     for (auto &triangle : mesh.triangles) {
         for (uint32_t &index : triangle) {
             if (remap[index] == UINT32_MAX) {
-                if (!mesh.vertices[index].allFinite())
-                    throw_corrupt("mesh file '" + path + "' has a vertex that is not finite");
-                remap[index] = static_cast<uint32_t>(used.size());
-                used.push_back(mesh.vertices[index]);
+                const Vec3 &v = mesh.vertices[index];
+                if (!v.allFinite()) throw_corrupt("mesh file '" + path + "' has a vertex that is not finite");
+                const auto inserted = welded.emplace(position_bits(v), static_cast<uint32_t>(used.size()));
+                if (inserted.second) used.push_back(v);
+                remap[index] = inserted.first->second;
             }
             index = remap[index];
         }
