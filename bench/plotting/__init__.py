@@ -1,0 +1,1 @@
+"""The plots of bench/plot, one module per results file (see bench/plot)."""
