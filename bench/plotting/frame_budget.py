@@ -10,7 +10,9 @@ FRAME_STAGES = (("structure", "structure (tree of boxes)", "tab:purple"),
                 ("distance_queries", "distance queries", "tab:red"))
 INGEST_COLOR = "0.65"
 INGEST_PANELS = (("ingest_raycast", "total", "ray-cast ingest (free + occupied cells)"),
-                 ("ingest_endpoints", "total_endpoints_ingest", "endpoint-only ingest"))
+                 ("ingest_endpoints", "total_endpoints_ingest", "endpoint-only ingest"),
+                 (None, None, "no ingest: structure, pose updates and queries only (zoomed)"))
+ZOOMED_CEILING_MS = 6 * 1000.0 / 30.0
 SHORT_PIPELINE = {"octoprox direct": "direct", "octoprox amortized": "amortized",
                   "FCL + OctoMap": "FCL"}
 
@@ -38,12 +40,15 @@ def frame_ceiling(bars):
 
 def draw_frame_bar(axes, x, entry, ingest_key, total_key, ceiling):
     bottom = 0.0
-    for key, _, color in FRAME_STAGES + ((ingest_key, "ingest", INGEST_COLOR),):
+    ingest = ((ingest_key, "ingest", INGEST_COLOR),) if ingest_key else ()
+    for key, _, color in FRAME_STAGES + ingest:
         height = entry[key]["median_ms"]
-        axes.bar(x, min(height, max(ceiling - bottom, 0)), 0.8, bottom=bottom,
-                 color=color, edgecolor="white", linewidth=0.5)
+        if min(height, max(ceiling - bottom, 0)) > 0:
+            axes.bar(x, min(height, max(ceiling - bottom, 0)), 0.8, bottom=bottom,
+                     color=color, edgecolor="white", linewidth=0.5)
         bottom += height
-    total = entry[total_key]["median_ms"]
+    # Without ingest: the sum of the stage medians.
+    total = entry[total_key]["median_ms"] if total_key else bottom
     text = f"{total:.0f} ms" if total >= 10 else f"{total:.1f} ms"
     if entry.get("distance_scaled"):
         text += "*"
@@ -80,14 +85,15 @@ def frame_legend(figure, pyplot):
     handles = [pyplot.Rectangle((0, 0), 1, 1, color=c) for _, _, c in FRAME_STAGES]
     handles.append(pyplot.Rectangle((0, 0), 1, 1, color=INGEST_COLOR))
     labels = [label for _, label, _ in FRAME_STAGES]
-    labels.append("ingest (top: ray-cast, bottom: endpoints)")
+    labels.append("ingest (top: ray-cast, middle: endpoints)")
     figure.legend(handles, labels, loc="upper center", ncol=5, fontsize=9,
                   bbox_to_anchor=(0.5, 0.945))
 
 
 def frame_note(frame_bench, bars):
     note = ("Bars: sum of the per-stage medians, bottom to top in the legend's order; "
-            "label: median of the per-frame totals (\u2191: bar cut at the top). "
+            "label: median of the per-frame totals (bottom panel: sum of the stage medians; "
+            "\u2191: bar cut at the top). "
             "FCL = FCL + OctoMap.\n")
     scaled = [(run, e) for _, run, e in bars if e.get("distance_scaled")]
     if scaled:
@@ -112,9 +118,9 @@ def plot_frame_budget(pyplot, frame_bench, out_dir):
     if not bars:
         raise PlotError("no runs with pipelines")
     ceiling = frame_ceiling(bars)
-    figure, panels = pyplot.subplots(2, 1, figsize=(max(10, 0.55 * len(bars) + 3), 10))
+    figure, panels = pyplot.subplots(3, 1, figsize=(max(10, 0.55 * len(bars) + 3), 14))
     for axes, panel in zip(panels, INGEST_PANELS):
-        draw_frame_panel(axes, bars, groups, panel, ceiling)
+        draw_frame_panel(axes, bars, groups, panel, ceiling if panel[0] else ZOOMED_CEILING_MS)
     figure.suptitle("Per-frame budget: one sensor frame, then pose update and queries"
                     f"{query_counts(frame_bench)}\n{frame_bench.get('cpu', 'unknown CPU')}",
                     x=0.01, ha="left")
