@@ -172,10 +172,25 @@ void print_break_even(const Row &fcl, const Row &amortized) {
     std::cout << "\n";
 }
 
+// Every contact (max_contacts unlimited): the query visits every colliding
+// pair, so its time reflects the tree's quality and not how soon its order
+// happens upon a first contact.
+bool opx_collides_everywhere(opx_query *query, const opx_octree *tree, const opx_linkset *links) {
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    request.max_contacts = UINT32_MAX;
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    check_opx(opx_query_collide(query, tree, links, &request, &result), "opx_query_collide");
+    return result.collided != 0;
+}
+
 // Refined after 100 queries vs a context refined by 100,000 cheap queries
 // first (a far-away tiny sphere: the refinement does not depend on the
-// links), interleaved so that load changes hit both alike.
-double refined_vs_full(const Bench &bench) {
+// links), interleaved so that load changes hit both alike.  Where the
+// objects collide (25k cells and more) a first-contact query takes a few
+// microseconds and mostly measures where the traversal happens to meet a
+// contact; the ratio that judges the tree is then that of every-contact
+// queries, printed beside it.  Returns the judging ratio.
+double refined_vs_full(const Bench &bench, bool objects_collide) {
     OpxQueryPtr after100 = make_query(OPX_ENGINE_AMORTIZED, 1);
     OpxQueryPtr full = make_query(OPX_ENGINE_AMORTIZED, 1);
     for (int i = 0; i < 100; ++i) opx_collides(after100.get(), bench.tree, bench.links);
@@ -189,11 +204,20 @@ double refined_vs_full(const Bench &bench) {
     const std::vector<QueryTiming> t = time_queries_interleaved(
         200, {[&] { return opx_collides(after100.get(), bench.tree, bench.links); },
               [&] { return opx_collides(full.get(), bench.tree, bench.links); }});
-    const double ratio = t[0].mean_ms / t[1].mean_ms;
+    double ratio = t[0].mean_ms / t[1].mean_ms;
     std::cout << "T_q refined after 100 queries: " << three_significant(t[0].mean_ms) << " ms; fully refined ("
               << kFullRefineQueries << " steps first, " << three_significant(warmup_ms)
               << " ms): " << three_significant(t[1].mean_ms) << " ms; SAH " << three_significant(sah_ratio(full.get()))
-              << "; ratio " << three_significant(ratio) << " (goal <= 1.2: " << yes_no(ratio <= 1.2) << ")\n";
+              << "; ratio " << three_significant(ratio);
+    if (objects_collide) {
+        const std::vector<QueryTiming> every = time_queries_interleaved(
+            100, {[&] { return opx_collides_everywhere(after100.get(), bench.tree, bench.links); },
+                  [&] { return opx_collides_everywhere(full.get(), bench.tree, bench.links); }});
+        ratio = every[0].mean_ms / every[1].mean_ms;
+        std::cout << " (first contact); every contact: " << three_significant(every[0].mean_ms) << " vs "
+                  << three_significant(every[1].mean_ms) << " ms, ratio " << three_significant(ratio);
+    }
+    std::cout << " (goal <= 1.2: " << yes_no(ratio <= 1.2) << ")\n";
     return ratio;
 }
 
@@ -230,8 +254,8 @@ std::vector<Row> run_size(const Bench &bench, size_t cells, const BenchOptions &
               << three_significant(fcl_t12 / std::max(rows[kRefined].t12, 1e-9)) << " refined, x"
               << three_significant(fcl_t12 / std::max(rows[kUnrefined].t12, 1e-9)) << " unrefined)\n";
     if (check_build) goals.build_10x = goals.build_10x && fast_build;
-    const double ratio = refined_vs_full(bench);
-    if (cells == 7784) goals.refined_1_2x = goals.refined_1_2x && ratio <= 1.2;
+    const double ratio = refined_vs_full(bench, rows[kRefined].collided);
+    goals.refined_1_2x = goals.refined_1_2x && ratio <= 1.2;
     for (int p : {kUnrefined, kRefined, 4}) {
         bool lower = rows[p].total(100) < std::min(rows[0].total(100), rows[1].total(100));
         std::cout << "goal: " << rows[p].pipeline << " T_1+100T_q < every FCL pipeline: " << yes_no(lower) << "\n";
@@ -300,7 +324,7 @@ int run_table1(const BenchOptions &options, const std::string &cpu) {
     }
     std::cout << "\nGoals: T~_{1,2} >= 10x faster than FCL default at 7,784 and 300k: " << yes_no(goals.build_10x)
               << (options.quick ? " (300k skipped in --quick)" : "")
-              << "; T_q after 100 queries within 1.2x of fully refined (7,784): " << yes_no(goals.refined_1_2x)
+              << "; T_q after 100 queries within 1.2x of fully refined (all sizes; every-contact queries where objects collide): " << yes_no(goals.refined_1_2x)
               << "; refined T_1+100T_q below every FCL pipeline (all sizes): " << yes_no(goals.total_100) << "\n";
     if (!options.json_path.empty() && !write_rows(options.json_path, all, cpu)) {
         std::cerr << "opx-paper-tables: cannot write " << options.json_path << "\n";
