@@ -24,29 +24,6 @@ bool convex_within(const Convex &core, double limit, const Vec3 &center, const V
     return result.intersecting || result.distance <= limit;
 }
 
-// Depth-first over the mesh's triangle tree, with the cell grown by the limit.
-bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, const Vec3 &half,
-                 uint64_t &narrow_tests) {
-    shape.place_mesh();
-    const AabbTree &tree = shape.mesh_tree;
-    const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));
-    int32_t stack[64];
-    int top = 0;
-    stack[top++] = tree.root();
-    while (top > 0) {
-        const AabbTreeNode &node = tree.node(stack[--top]);
-        if (!node.box.overlaps(cell)) continue;
-        if (node.is_leaf()) {
-            ++narrow_tests;
-            if (convex_within(shape.triangle(node.item), limit, center, half)) return true;
-            continue;
-        }
-        stack[top++] = node.left;
-        stack[top++] = node.right;
-    }
-    return false;
-}
-
 // Oriented box (centre, axes, half) against an axis-aligned box, on the
 // face axes of both: conservative, since the 9 edge axes are not tried.
 bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half,
@@ -70,6 +47,34 @@ double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const V
     const double world_gap = (offset.cwiseAbs() - box_half - abs_axes * half).maxCoeff();
     const double local_gap = ((axes.transpose() * offset).cwiseAbs() - half - abs_axes.transpose() * box_half).maxCoeff();
     return std::max(world_gap, local_gap);
+}
+
+// Depth-first over the mesh's triangle tree in the mesh's own frame, so a
+// collision query never places the mesh (most queries touch a mesh in a few
+// nodes): a node's box, posed, is an oriented box, tested against the cell
+// grown by the limit on the face axes of both; a leaf's triangle is posed
+// (three vertices, as PlacedShape::place_mesh would) for the exact test.
+bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, const Vec3 &half,
+                 uint64_t &narrow_tests) {
+    const AabbTree &tree = shape.def->mesh_tree;
+    const Eigen::Matrix3d &rotation = shape.core.axes;
+    const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));
+    int32_t stack[64];
+    int top = 0;
+    stack[top++] = tree.root();
+    while (top > 0) {
+        const AabbTreeNode &node = tree.node(stack[--top]);
+        const Vec3 node_center = rotation * node.box.center() + shape.core.center;
+        if (!oriented_box_may_touch(node_center, rotation, node.box.half_extent(), cell)) continue;
+        if (node.is_leaf()) {
+            ++narrow_tests;
+            if (convex_within(shape.posed_triangle(node.item), limit, center, half)) return true;
+            continue;
+        }
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+    }
+    return false;
 }
 
 }  // namespace

@@ -8,6 +8,10 @@
 
 namespace octoprox {
 
+// Up to this many vertices a mesh's box after a pose update is the exact
+// box of its placed vertices; above, the union of its placed frontier boxes.
+constexpr size_t kExactBoxVertices = 256;
+
 // The boxes of the tree's nodes kFrontierDepth levels below the root (or
 // the leaves above that depth): together they hold every item.
 constexpr int kFrontierDepth = 4;

@@ -38,7 +38,13 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
         for (const Vec3 &v : s.world_vertices) box.grow(v);
         return box;
     }
-    case ShapeKind::kMesh: return placed_frontier_box(def.frontier_boxes, core.axes, core.center);
+    case ShapeKind::kMesh: {
+        if (def.vertices.size() > kExactBoxVertices)
+            return placed_frontier_box(def.frontier_boxes, core.axes, core.center);
+        Aabb box;  // few vertices: the exact box costs about as much as the frontier's
+        for (const Vec3 &v : def.vertices) box.grow(Vec3(core.axes * v + core.center));
+        return box;
+    }
     }
     return Aabb();
 }
@@ -72,6 +78,14 @@ Aabb PlacedShape::exact_box() const {
     Aabb exact = mesh_vertex_box;
     exact.inflate(inflation);
     return exact;
+}
+
+Convex PlacedShape::posed_triangle(int32_t index) const {
+    const auto &t = def->triangles[index];
+    Convex c;
+    c.kind = ConvexKind::kTriangle;
+    for (int k = 0; k < 3; ++k) c.v[k] = core.axes * def->vertices[t[k]] + core.center;
+    return c;
 }
 
 Convex PlacedShape::triangle(int32_t index) const {

@@ -60,8 +60,9 @@ struct PlacedShape {
     double inflation = 0.0;  // radius of the ball added to the core
     Convex core;             // every kind but mesh (a mesh's core holds only its pose: center, axes)
     // Bounds of the inflated shape, empty when disabled: exact for every
-    // kind but mesh, whose box is the union of its placed frontier boxes
-    // (bounds for culling; exact_box() gives the tight one).
+    // kind but a mesh of many vertices, whose box is the union of its
+    // placed frontier boxes (bounds for culling; exact_box() gives the
+    // tight one).
     Aabb box;
     // Convex hull: map frame.  Mesh: map frame once place_mesh() ran.
     mutable std::vector<Vec3> world_vertices;
@@ -80,6 +81,9 @@ struct PlacedShape {
     Aabb exact_box() const;
     // A triangle of the (placed) mesh as a convex core.
     Convex triangle(int32_t index) const;
+    // The same triangle placed from the shape-frame vertices, bit for bit
+    // as place_mesh() places them; needs no placement.
+    Convex posed_triangle(int32_t index) const;
 };
 
 // Places `def` at link pose `link_pose` with `padding`; enabled=false

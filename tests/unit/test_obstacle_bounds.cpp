@@ -82,15 +82,10 @@ void insert_frame(octoprox::SensorOctree &tree, std::mt19937_64 &rng, bool rayca
     std::uniform_real_distribution<double> coordinate(-extent, extent);
     std::vector<double> xyz;
     for (int i = 0; i < 400; ++i) xyz.insert(xyz.end(), {coordinate(rng), coordinate(rng), coordinate(rng)});
-    octoprox::PointSource points;
-    points.data = reinterpret_cast<const unsigned char *>(xyz.data());
-    points.count = xyz.size() / 3;
-    points.stride = 3 * sizeof(double);
-    points.is_double = true;
     octoprox::InsertSettings settings;
     settings.raycast = raycast;
     settings.sensor_pose.translation = octoprox::Vec3(coordinate(rng), coordinate(rng), coordinate(rng)) * 0.2;
-    tree.insert(points, settings);
+    unit::insert_xyz(tree, xyz, settings);
 }
 
 TEST(ObstacleBounds, RayCastFramesKeepExactBoxes) {

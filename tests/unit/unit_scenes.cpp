@@ -53,15 +53,19 @@ std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed) {
                                          std::lround(std::floor(p.z() / kResolution)));
         if (cells.insert(key).second) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
     }
+    octoprox::InsertSettings settings;
+    settings.raycast = false;
+    insert_xyz(*tree, xyz, settings);
+    return tree;
+}
+
+void insert_xyz(octoprox::SensorOctree &tree, const std::vector<double> &xyz, const octoprox::InsertSettings &settings) {
     octoprox::PointSource points;
     points.data = reinterpret_cast<const unsigned char *>(xyz.data());
     points.count = xyz.size() / 3;
     points.stride = 3 * sizeof(double);
     points.is_double = true;
-    octoprox::InsertSettings settings;
-    settings.raycast = false;
-    tree->insert(points, settings);
-    return tree;
+    tree.insert(points, settings);
 }
 
 std::unique_ptr<octoprox::SensorOctree> read_octree(const std::string &path) {

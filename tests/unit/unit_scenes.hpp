@@ -25,6 +25,9 @@ std::vector<octoprox::Aabb> random_boxes(size_t n, double extent, double max_edg
 // hit once (occupied), in a sensor octree.
 std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed);
 
+// Inserts the points (x y z doubles, packed) with `settings`.
+void insert_xyz(octoprox::SensorOctree &tree, const std::vector<double> &xyz, const octoprox::InsertSettings &settings);
+
 // The map at `path` (.bt), default parameters (threshold 0.5).
 std::unique_ptr<octoprox::SensorOctree> read_octree(const std::string &path);
 
