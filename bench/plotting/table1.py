@@ -64,11 +64,16 @@ def draw_cumulative(axes, rows):
                           xy=(n, amortized[n - 1]), xytext=(n * 2.2, amortized[n - 1] / 4),
                           arrowprops={"arrowstyle": "->", "color": "tab:green"},
                           fontsize=9, color="tab:green")
+    finish_log_axes(axes, "cumulative time T_1 + N T_q(N) [ms]", "Cumulative cost of N queries")
+
+
+def finish_log_axes(axes, ylabel, title):
+    """Log-log axes against N, plain tick labels, grid and legend."""
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_xlabel("queries N after one build")
-    axes.set_ylabel("cumulative time T_1 + N T_q(N) [ms]")
-    axes.set_title("Cumulative cost of N queries")
+    axes.set_ylabel(ylabel)
+    axes.set_title(title)
     plain_log_ticks(axes.xaxis)
     plain_log_ticks(axes.yaxis)
     axes.grid(True, which="both", alpha=0.3)
@@ -82,15 +87,8 @@ def draw_tq_average(axes, rows):
         axes.plot(counts, [tq_average(points, n) for n in counts],
                   label=row["pipeline"], color=color_of(row["pipeline"]))
         axes.plot(*zip(*points), "o", color=color_of(row["pipeline"]), markersize=4)
-    axes.set_xscale("log")
-    axes.set_yscale("log")
-    axes.set_xlabel("queries N after one build")
-    axes.set_ylabel("mean query time T_q(N) of the first N queries [ms]")
-    axes.set_title("Mean query time (the tree refines as queries run)")
-    plain_log_ticks(axes.xaxis)
-    plain_log_ticks(axes.yaxis)
-    axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=8)
+    finish_log_axes(axes, "mean query time T_q(N) of the first N queries [ms]",
+                    "Mean query time (the tree refines as queries run)")
 
 
 def plot_break_even(pyplot, table1, out_dir):
