@@ -34,6 +34,7 @@ public:
         // band, no leaf under it is wanted.
         if (l < lowest_wanted_) return;
         if (view_.has_children(node)) {
+            view_.prefetch_children(node, 0xFFu);
             for (int i = 0; i < 8; ++i)
                 if (OctreeView::NodeRef child = view_.child(node, i)) visit(child, key.child(i));
             return;

@@ -57,6 +57,10 @@ public:
     // obstacles are leaves at or above a threshold >= bounds_threshold().
     uint32_t packed_obstacle_bounds(NodeRef node) const;
     float bounds_threshold() const { return bounds_threshold_; }
+    // Asks the CPU to fetch the children in `mask` (bit i: child i) ahead:
+    // each is its own allocation, so a traversal that reads them one after
+    // the other waits for one cache miss after another.
+    void prefetch_children(NodeRef node, unsigned mask) const;
 
 private:
     const void *tree_;

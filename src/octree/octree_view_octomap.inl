@@ -25,6 +25,11 @@ inline OctreeView::NodeRef OctreeView::child(NodeRef node, int index) const {
     return tree->nodeChildExists(n, index) ? tree->getNodeChild(n, index) : nullptr;
 }
 
+inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
+    for (unsigned bits = mask; bits != 0; bits &= bits - 1)
+        if (NodeRef next = child(node, __builtin_ctz(bits))) __builtin_prefetch(next);
+}
+
 inline float OctreeView::log_odds(NodeRef node) const {
     return static_cast<const BoundedNode *>(node)->getLogOdds();
 }

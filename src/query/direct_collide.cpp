@@ -56,6 +56,7 @@ void DirectCollider::descend_octree(const Cell &cell, int32_t robot_node) {
     const unsigned reached = children_overlapping(robot.box, mid);
     // A single shape is culled by its own tighter test, not only its box.
     const PlacedShape *shape = robot.is_leaf() ? &links_->placed()[robot.item] : nullptr;
+    view_->prefetch_children(cell.node, reached);
     for (unsigned bits = reached; bits != 0 && !done_; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
         const Cell child = child_cell(cell, view_->child(cell.node, i), i, mid);

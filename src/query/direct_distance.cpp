@@ -118,6 +118,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
     Child children[8];
     int order[8];  // indices into children, nearest first
     int count = 0;
+    view_->prefetch_children(cell.node, reached);
     for (unsigned bits = reached; bits != 0; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
         const OctreeView::NodeRef node = view_->child(cell.node, i);
