@@ -2,6 +2,17 @@
 
 namespace octoprox::capi {
 
+bool pose_is_valid(const opx_pose &pose) {
+    double norm2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(pose.position[i])) return false;
+    for (int i = 0; i < 4; ++i) {
+        if (!std::isfinite(pose.orientation[i])) return false;
+        norm2 += pose.orientation[i] * pose.orientation[i];
+    }
+    return norm2 >= 1e-12;
+}
+
 Pose read_pose(const opx_pose &pose, const char *argument) {
     double norm2 = 0.0;
     for (int i = 0; i < 3; ++i) {

@@ -73,4 +73,16 @@ opx_status init_struct(const char *function, T *out, size_t size, const T &defau
 // A pose from the ABI, checked: finite, non-zero quaternion (normalised).
 Pose read_pose(const opx_pose &pose, const char *argument);
 
+// What read_pose accepts, without a message.
+bool pose_is_valid(const opx_pose &pose);
+
+// read_pose for an element of an array, whose argument name ("poses[12]")
+// `name()` formats only when the pose is bad: a robot's 95 poses per
+// configuration must not cost 95 formatted strings.
+template <class Name>
+Pose read_pose_lazily(const opx_pose &pose, Name &&name) {
+    if (pose_is_valid(pose)) return pose_from_ros(pose.position, pose.orientation);
+    return read_pose(pose, name().c_str());
+}
+
 }  // namespace octoprox::capi

@@ -21,6 +21,7 @@ struct opx_octree {
 struct opx_linkset {
     octoprox::LinkSet links;
     octoprox::RobotModel robot;  // joints: empty unless made from URDF
+    std::vector<octoprox::Pose> pose_scratch;  // opx_linkset_set_poses: no allocation per call
 };
 
 struct opx_query {

@@ -155,7 +155,7 @@ OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out
     return guard(__func__, [&] {
         require_pointer(links, "links");
         require_pointer(out, "out");
-        *out = new opx_linkset{links->links, links->robot};
+        *out = new opx_linkset{links->links, links->robot, {}};
         return OPX_OK;
     });
 }
@@ -262,11 +262,12 @@ OPX_API opx_status opx_linkset_set_poses(opx_linkset *links, const opx_pose *pos
             throw_invalid(format("stride %zu is smaller than one opx_pose (%zu bytes)", stride, sizeof(opx_pose)));
         if (count > 0) require_pointer(poses, "poses");
         const size_t step = stride == 0 ? sizeof(opx_pose) : stride;
-        std::vector<Pose> converted(count);
+        std::vector<Pose> &converted = links->pose_scratch;
+        converted.resize(count);
         for (size_t i = 0; i < count; ++i) {
             opx_pose pose;
             std::memcpy(&pose, reinterpret_cast<const unsigned char *>(poses) + i * step, sizeof pose);
-            converted[i] = read_pose(pose, format("poses[%zu]", i).c_str());
+            converted[i] = read_pose_lazily(pose, [i] { return format("poses[%zu]", i); });
         }
         links->links.set_poses(converted);
         return OPX_OK;

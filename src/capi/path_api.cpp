@@ -39,7 +39,8 @@ std::vector<Pose> read_path_poses(const opx_pose *poses, size_t waypoints, size_
         for (size_t l = 0; l < links; ++l) {
             opx_pose pose;
             std::memcpy(&pose, bytes + w * row + l * step, sizeof pose);
-            all[w * links + l] = read_pose(pose, format("poses[waypoint %zu, link %zu]", w, l).c_str());
+            all[w * links + l] =
+                read_pose_lazily(pose, [w, l] { return format("poses[waypoint %zu, link %zu]", w, l); });
         }
     }
     return all;

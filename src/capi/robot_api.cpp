@@ -159,7 +159,8 @@ OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const dou
         if (count != joints.joint_count())
             throw_invalid(format("count %zu differs from the number of joints, %zu", count, joints.joint_count()));
         if (count > 0) require_pointer(positions, "positions");
-        for (size_t i = 0; i < count; ++i) require_finite(positions[i], format("positions[%zu]", i).c_str());
+        for (size_t i = 0; i < count; ++i)  // the name is formatted only for a bad value
+            if (!std::isfinite(positions[i])) require_finite(positions[i], format("positions[%zu]", i).c_str());
         const Pose base = read_base_pose(base_pose);
         joints.set_commanded(positions);
         joints.update_positions();
@@ -178,7 +179,8 @@ OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links, con
             if (names[i] == nullptr) throw_invalid(format("names[%zu] is NULL", i));
             if (joints.find(names[i]) == kNoIndex)
                 throw_invalid(format("names[%zu] \"%.80s\": no joint has this name", i, names[i]));
-            require_finite(positions[i], format("positions[%zu] (joint \"%.80s\")", i, names[i]).c_str());
+            if (!std::isfinite(positions[i]))
+                require_finite(positions[i], format("positions[%zu] (joint \"%.80s\")", i, names[i]).c_str());
         }
         const Pose base = read_base_pose(base_pose);
         for (size_t i = 0; i < count; ++i) joints.set_commanded(joints.find(names[i]), positions[i]);
