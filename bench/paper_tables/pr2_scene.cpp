@@ -57,7 +57,10 @@ size_t occupied_count(const opx_octree *tree) {
     return stats.leaves_occupied;
 }
 
-// OctoMap reads OctoProx's .bt bytes: the same leaves, occupied or free.
+bool is_mesh(const opx_shape &shape) { return shape.kind == OPX_SHAPE_MESH; }
+
+}  // namespace
+
 std::shared_ptr<octomap::OcTree> mirror_through_bt(const opx_octree *tree, double resolution) {
     size_t size = 0;
     opx_octree_save_memory(tree, OPX_FORMAT_BT, nullptr, 0, &size);  // BUFFER_TOO_SMALL gives the size
@@ -68,10 +71,6 @@ std::shared_ptr<octomap::OcTree> mirror_through_bt(const opx_octree *tree, doubl
     if (!mirror->readBinary(stream)) throw std::runtime_error("octomap readBinary failed on OctoProx's .bt bytes");
     return mirror;
 }
-
-bool is_mesh(const opx_shape &shape) { return shape.kind == OPX_SHAPE_MESH; }
-
-}  // namespace
 
 std::string data_root() {
     const char *env = std::getenv("OPX_DATA_DIR");

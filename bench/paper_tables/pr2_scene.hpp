@@ -47,6 +47,9 @@ struct FrameMaps {
     std::shared_ptr<octomap::OcTree> octomap;
 };
 
+// OctoMap reads OctoProx's .bt bytes: the same leaves, occupied or free.
+std::shared_ptr<octomap::OcTree> mirror_through_bt(const opx_octree *tree, double resolution);
+
 // Builds the map at each candidate resolution and keeps the one whose
 // occupied-cell count is closest to `target_cells`; prints the counts.
 FrameMaps build_frame_maps(const opx_pose &sensor, const std::vector<double> &resolutions, size_t target_cells);

@@ -73,6 +73,8 @@ std::shared_ptr<octomap::OcTree> mirror_in_octomap(const opx_octree *tree, const
     return mirror;
 }
 
+}  // namespace
+
 SceneObject draw_shape(ObjectKind kind, Rng &rng) {
     SceneObject object;
     object.kind = kind;
@@ -88,8 +90,6 @@ SceneObject draw_shape(ObjectKind kind, Rng &rng) {
     }
     return object;
 }
-
-}  // namespace
 
 void check_opx(opx_status status, const char *what) {
     if (status == OPX_OK) return;

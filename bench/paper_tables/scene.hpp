@@ -61,6 +61,9 @@ struct OccupancyMaps {
 // `occupied_cells` leaves are occupied, then the same cells in OctoMap.
 OccupancyMaps build_occupancy_maps(const SceneParameters &parameters);
 
+// One object of `kind` with the scene's random sizes (m), identity pose.
+SceneObject draw_shape(ObjectKind kind, Rng &rng);
+
 // 100 spheres, 100 boxes, 100 cylinders with uniform poses, in that order.
 std::vector<SceneObject> draw_objects(const SceneParameters &parameters, Rng &rng);
 

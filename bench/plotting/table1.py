@@ -105,6 +105,14 @@ def plot_break_even(pyplot, table1, out_dir):
     save(figure, out_dir, "plot_break_even.png")
 
 
+ROOM_MAP = "room 2 cm"
+
+
+def is_room(row):
+    """A row of the 2 cm Kinect-like frame (a real-looking map, not random cells)."""
+    return row.get("map") == ROOM_MAP
+
+
 def scaling_tq(row):
     """(N, T_q) at the largest N measured for the row."""
     return measured_tq(row)[-1]
@@ -124,12 +132,17 @@ def draw_scaling(axes, grouped, value, ylabel, title, split_by_contact):
     for pipeline, rows in grouped.items():
         label = pipeline
         for kind in ((False, True) if split_by_contact else (None,)):
-            points = [(r["cells"], value(r)) for r in rows if value(r) > 0
+            points = [(r["cells"], value(r)) for r in rows if value(r) > 0 and not is_room(r)
                       and (kind is None or bool(r.get("collided")) == kind)]
             if points:
                 axes.plot(*zip(*points), "o-", color=color_of(pipeline), label=label,
                           markerfacecolor="white" if kind is False else None)
                 label = None
+        room = [(r["cells"], value(r)) for r in rows if value(r) > 0 and is_room(r)]
+        if room:  # another kind of map: a star, not a point of the line
+            axes.plot(*zip(*room), "*", color=color_of(pipeline), markersize=11)
+    if any(is_room(r) for rows in grouped.values() for r in rows):
+        axes.plot([], [], "*", color="gray", markersize=11, label=f"{ROOM_MAP} frame (stars)")
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_xlabel("occupied cells")
@@ -137,7 +150,7 @@ def draw_scaling(axes, grouped, value, ylabel, title, split_by_contact):
     axes.set_title(title)
     plain_log_ticks(axes.yaxis)
     # ticks at the measured map sizes only
-    axes.set_xticks(sorted({r["cells"] for rows in grouped.values() for r in rows}))
+    axes.set_xticks(sorted({r["cells"] for rows in grouped.values() for r in rows if not is_room(r)}))
     axes.xaxis.set_major_formatter("{x:,.0f}")
     axes.xaxis.set_minor_formatter("")
     axes.grid(True, which="both", alpha=0.3)
@@ -155,6 +168,10 @@ def scaling_note(table1):
     if collided:
         note += (f" At {', '.join(f'{c:,}' for c in collided)} cells the objects collide, "
                  "so a query stops at its first contact (not a full traversal).")
+    room = sorted({r["cells"] for r in table1 if is_room(r)})
+    if room:
+        note += (f" Stars: the generated room ray-cast at 2 cm ({room[0]:,} cells), "
+                 "objects at a tenth of their size.")
     return note
 
 
