@@ -2,6 +2,7 @@
 
 import math
 import os
+import textwrap
 
 PIPELINE_COLORS = {
     "octoprox direct": "tab:blue",
@@ -47,6 +48,8 @@ def plain_log_ticks(axis):
     axis.set_minor_formatter(FuncFormatter(minor))
 
 
-def footnote(figure, text):
-    figure.text(0.01, 0.005, text, fontsize=8, color="dimgray", ha="left", va="bottom")
+def footnote(figure, text, width=190):
+    """Grey notes under the axes, each line wrapped at `width` characters."""
+    lines = [wrapped for line in text.split("\n") for wrapped in textwrap.wrap(line, width) or [""]]
+    figure.text(0.01, 0.005, "\n".join(lines), fontsize=8, color="dimgray", ha="left", va="bottom")
 

@@ -188,5 +188,5 @@ def plot_scaling(pyplot, table1, out_dir):
                     f"({cpu_of(table1)})")
     footnote(figure, scaling_note(table1) + "\nSource: opx-paper-tables --table I "
              "--json table1.json")
-    figure.tight_layout(rect=(0, 0.05, 1, 1))
+    figure.tight_layout(rect=(0, 0.07, 1, 1))
     save(figure, out_dir, "plot_scaling.png")
