@@ -73,7 +73,10 @@ OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out
 OPX_API opx_status opx_linkset_add_link(opx_linkset *links, const char *name,
                                         uint32_t *out_link);
 /* Adds a shape to a link; *out_shape (may be NULL) gets its index within
- * the link.  Meshes are built into a BVH over their triangles here, once. */
+ * the link.  Meshes are built into a BVH over their triangles here, once.
+ * Only the new shape is placed; the link set's own BVH is rebuilt by the
+ * next opx_linkset_set_poses or query, so building a set of n shapes one
+ * by one costs O(n log n). */
 OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link,
                                          const opx_shape *shape, uint32_t *out_shape);
 

@@ -19,21 +19,32 @@ LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_), generation_(o
     rebuild();
 }
 
+// A new link has no shapes yet: nothing to place.
 uint32_t LinkSet::add_link(const std::string &name) {
     ++generation_;
     Link link;
     link.name = name;
     links_.push_back(std::move(link));
-    rebuild();
+    first_placed_.push_back(static_cast<uint32_t>(placed_.size()));
+    mark_topology_stale();
     return static_cast<uint32_t>(links_.size() - 1);
 }
 
+// Places only the new shape, after the link's others in placed_.
 uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
     ++generation_;
     if (def.kind == ShapeKind::kMesh) build_mesh_tree(def);
-    links_[link].shapes.push_back(std::make_unique<ShapeDef>(std::move(def)));
-    rebuild();
-    return static_cast<uint32_t>(links_[link].shapes.size() - 1);
+    Link &l = links_[link];
+    l.shapes.push_back(std::make_unique<ShapeDef>(std::move(def)));
+    const uint32_t shape = static_cast<uint32_t>(l.shapes.size() - 1);
+    const size_t at = first_placed_[link] + shape;
+    placed_.insert(placed_.begin() + static_cast<std::ptrdiff_t>(at), PlacedShape());
+    for (uint32_t later = link + 1; later < links_.size(); ++later) ++first_placed_[later];
+    PlacedShape &placed = placed_[at];
+    placed.link = link, placed.shape = shape;
+    place_shape(*l.shapes[shape], l.pose, padding_ + l.padding, l.enabled, placed);
+    mark_topology_stale();
+    return shape;
 }
 
 void LinkSet::set_padding(double padding) {
@@ -99,22 +110,37 @@ void LinkSet::rebuild() {
     }
     placed_.assign(total, PlacedShape());
     for (uint32_t i = 0; i < links_.size(); ++i) place_link(i);
-    build_topology();
+    mark_topology_stale();
+}
+
+// The next poses rebuild the topology anyway (set_poses); a query before
+// them does it in tree().
+void LinkSet::mark_topology_stale() {
     topology_from_poses_ = false;
+    topology_stale_.store(true, std::memory_order_release);
+}
+
+void LinkSet::rebuild_stale_topology() const {
+    std::lock_guard<std::mutex> lock(topology_mutex_);
+    if (!topology_stale_.load(std::memory_order_relaxed)) return;  // another reader built it
+    build_topology();
 }
 
 // Disabled shapes have empty boxes; the split uses their centres instead.
-void LinkSet::build_topology() {
+void LinkSet::build_topology() const {
     std::vector<Aabb> boxes;
     boxes.reserve(placed_.size());
     for (const PlacedShape &p : placed_)
         boxes.push_back(p.box.empty() ? Aabb::from_center(p.core.center, Vec3::Zero()) : p.box);
     tree_.build(boxes);
+    topology_stale_.store(false, std::memory_order_release);
     refit();
 }
 
 // Reuses box_scratch_, so new poses allocate nothing once the set is built.
-void LinkSet::refit() {
+// A stale topology is rebuilt from the current boxes later: nothing to do.
+void LinkSet::refit() const {
+    if (topology_stale_.load(std::memory_order_relaxed)) return;
     box_scratch_.clear();
     for (const PlacedShape &p : placed_) box_scratch_.push_back(p.box);
     tree_.refit(box_scratch_);

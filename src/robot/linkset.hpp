@@ -1,14 +1,19 @@
 // A robot as links with shapes, paddings, enabled flags and map-frame
 // poses, and the BVH over all placed shapes that queries traverse.  Every
-// change brings the shapes' boxes and the BVH up to date at once, so a
-// const LinkSet is always ready to query (from any number of threads); a
-// mesh's vertices and triangle tree follow when a query first reaches the
-// mesh (PlacedShape::place_mesh, thread-safe).
+// change brings the shapes' boxes up to date at once; a change of the set
+// of shapes (or of which are enabled) only marks the BVH's topology stale,
+// and the first reader of tree() rebuilds it (thread-safe), so adding n
+// shapes one by one costs O(n log n), not n tree builds.  A const LinkSet
+// is thus always ready to query from any number of threads; a mesh's
+// vertices and triangle tree follow when a query first reaches the mesh
+// (PlacedShape::place_mesh, thread-safe).
 #pragma once
 
 #include "robot/shape.hpp"
 
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -49,21 +54,30 @@ public:
 
     // What queries read: placed shapes and the tree over their boxes.
     const std::vector<PlacedShape> &placed() const { return placed_; }
-    const AabbTree &tree() const { return tree_; }
+    const AabbTree &tree() const {
+        if (topology_stale_.load(std::memory_order_acquire)) rebuild_stale_topology();
+        return tree_;
+    }
 
 private:
     void place_link(uint32_t link);
     static bool same_pose(const Pose &a, const Pose &b);
-    void rebuild();  // after the set of shapes changed
-    void build_topology();
-    void refit();    // after boxes changed
+    void rebuild();  // place every shape, topology stale
+    void mark_topology_stale();
+    void rebuild_stale_topology() const;  // under topology_mutex_
+    void build_topology() const;
+    void refit() const;  // after boxes changed
 
     std::vector<Link> links_;
     double padding_ = 0.0;
     std::vector<PlacedShape> placed_;
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_
-    AabbTree tree_;
-    std::vector<Aabb> box_scratch_;       // refit's input, capacity kept
+    // Built by the first tree() after a change of the shapes: mutable,
+    // guarded by the flag and the mutex.
+    mutable AabbTree tree_;
+    mutable std::vector<Aabb> box_scratch_;  // refit's input, capacity kept
+    mutable std::atomic<bool> topology_stale_{false};
+    mutable std::mutex topology_mutex_;
     bool topology_from_poses_ = false;
     uint64_t generation_ = 0;
     uint64_t identity_ = next_identity();
