@@ -306,6 +306,34 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree,
                                   size_t waypoint_stride, const opx_path_request *request,
                                   opx_path_result *out_result);
 
+/*
+ * A caller's boxes as the map (a "collision map" from another source:
+ * paper IV.A accepts any set of boxes).  `boxes` holds count axis-aligned
+ * boxes of 6 doubles each, min x y z then max x y z (map frame, metres,
+ * min <= max), `stride` bytes apart (0: packed, 48 bytes).  The context must
+ * be OPX_ENGINE_AMORTIZED: it copies the boxes and builds its Morton tree
+ * over them (opx_query_get_stats: extract_ms is the copy, build_ms the
+ * tree), refined by every query as for octrees.  The boxes stay bound until
+ * the next opx_query_bind_boxes, or until an octree query binds its frame.
+ * count 0 binds an empty map.
+ */
+OPX_API opx_status opx_query_bind_boxes(opx_query *query, const double *boxes, size_t count, size_t stride);
+/*
+ * Collision and distance against the bound boxes, with the octree queries'
+ * exact tests, results and rules (max_contacts, cutoff, per_link).  A box
+ * is reported as a cell: cell_center its centre, cell_size its LONGEST edge,
+ * class OPX_CELL_OCCUPIED, probability 1.  occupancy_threshold and
+ * unknown_policy do not apply (they are only checked); compute_cost,
+ * compute_penetration and signed_distance are errors.  Without bound boxes:
+ * OPX_ERROR_INVALID_ARGUMENT.
+ */
+OPX_API opx_status opx_query_collide_boxes(opx_query *query, const opx_linkset *links,
+                                           const opx_collision_request *request,
+                                           opx_collision_result *out_result);
+OPX_API opx_status opx_query_distance_boxes(opx_query *query, const opx_linkset *links,
+                                            const opx_distance_request *request,
+                                            opx_distance_result *out_result);
+
 #ifdef __cplusplus
 }
 #endif

@@ -28,6 +28,7 @@ struct DistanceOutcome {
     CellKey cell;
     bool cell_unknown = false;
     float cell_log_odds = 0.0f;
+    int64_t box_index = -1;  // caller boxes (AmortizedEngine::bind_boxes): the closest box
     uint64_t narrow_tests = 0;
 };
 

@@ -129,6 +129,19 @@ def vertex_array(vertices, where):
     return arr
 
 
+def box_array(boxes, where):
+    """(N, 6) float64 boxes (min x y z, max x y z) by address and row
+    stride (else one copy)."""
+    arr = boxes if isinstance(boxes, np.ndarray) else np.asarray(boxes, np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 6:
+        raise invalid(f"{where}: boxes must have shape (N, 6): min x y z, max x y z; "
+                      f"got {arr.shape}")
+    if arr.dtype != np.float64 or not arr.dtype.isnative or arr.strides[1] != 8 or \
+            (len(arr) > 1 and arr.strides[0] < 48):
+        arr = np.ascontiguousarray(arr, dtype=np.float64)
+    return arr
+
+
 def triangle_array(triangles, where):
     """(M, 3) packed uint32 vertex indices (a copy unless already so)."""
     arr = np.asarray(triangles)

@@ -117,6 +117,11 @@ SIGNATURES = {
     "opx_query_get_link_distances": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
     "opx_query_path": (status, [handle, handle, handle, c_void_p, c_size_t, c_size_t, c_size_t,
                                 P(s.PathRequest), P(s.PathResult)]),
+    "opx_query_bind_boxes": (status, [handle, c_void_p, c_size_t, c_size_t]),
+    "opx_query_collide_boxes": (status, [handle, handle, P(s.CollisionRequest),
+                                         P(s.CollisionResult)]),
+    "opx_query_distance_boxes": (status, [handle, handle, P(s.DistanceRequest),
+                                          P(s.DistanceResult)]),
 }
 SIGNATURES.update({init: _versioned_init(struct) for struct, init in s.VERSIONED.items()})
 

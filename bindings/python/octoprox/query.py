@@ -3,7 +3,8 @@
 import numpy as np
 
 from . import _structs as s
-from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, invalid, pose_array, pose_strides, read_array
+from ._arrays import (CONTACT_DTYPE, COST_BOX_DTYPE, box_array, invalid, pose_array, pose_strides,
+                      read_array)
 from ._handle import Handle
 from ._library import init_struct, lib
 from .linkset import LinkSet
@@ -101,4 +102,33 @@ class Query(Handle):
         lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0], pose_stride,
                            waypoint_stride, req, out)
         self._cost_box_count = out.cost_box_count
+        return out
+
+    def bind_boxes(self, boxes):
+        """Binds a caller's boxes as the map (amortized contexts only): an
+        (N, 6) array of min x y z, max x y z, map frame, metres; copied.
+        collide_boxes() and distance_boxes() then query them."""
+        arr = box_array(boxes, "Query.bind_boxes")
+        stride = arr.strides[0] if len(arr) > 1 else 0
+        lib.opx_query_bind_boxes(self, arr.ctypes.data if len(arr) else None, len(arr), stride)
+
+    def collide_boxes(self, links, **request):
+        """collide() against the boxes of bind_boxes(); a contact's
+        cell_center is the box's centre, cell_size its longest edge."""
+        if not isinstance(links, LinkSet):
+            raise TypeError(f"Query.collide_boxes: expected a LinkSet, got {type(links).__name__}")
+        req = init_struct(s.CollisionRequest, **request)
+        out = init_struct(s.CollisionResult)
+        self._contact_count = self._cost_box_count = 0
+        lib.opx_query_collide_boxes(self, links, req, out)
+        self._contact_count = out.contact_count
+        return out
+
+    def distance_boxes(self, links, **request):
+        """distance() against the boxes of bind_boxes()."""
+        if not isinstance(links, LinkSet):
+            raise TypeError(f"Query.distance_boxes: expected a LinkSet, got {type(links).__name__}")
+        req = init_struct(s.DistanceRequest, **request)
+        out = init_struct(s.DistanceResult)
+        lib.opx_query_distance_boxes(self, links, req, out)
         return out

@@ -89,6 +89,33 @@ class Distance(unittest.TestCase):
                          (octoprox.ENGINE_AMORTIZED, 1, 1))
 
 
+class CallerBoxes(unittest.TestCase):
+    def test_boxes_strided_in_place_answer_like_the_cell(self):
+        # The one cell as a box, every other row of a (2, 6) view: stride 96.
+        table = np.zeros((2, 12))
+        table[:, :6] = [[0, 0, 0, RES, RES, RES], [5, 5, 5, 6, 6, 6]]
+        query = octoprox.Query(engine="amortized")
+        query.bind_boxes(table[:, :6])
+        ball = sphere_at(0.1, C0, C0, 1.0)
+        expected = octoprox.Query().distance(one_cell_map(), ball).distance
+        result = query.distance_boxes(ball)
+        self.assertAlmostEqual(result.distance, expected, places=12)
+        self.assertEqual(list(result.cell_center), [C0, C0, C0])
+        self.assertFalse(query.collide_boxes(ball).collided)
+        touching = sphere_at(0.1, 0.35, C0, C0)
+        self.assertTrue(query.collide_boxes(touching, max_contacts=4).collided)
+        self.assertEqual(len(query.contacts()), 1)
+        self.assertEqual(query.stats.boxes, 2)
+
+    def test_bad_boxes_and_a_direct_context_are_refused(self):
+        with self.assertRaises(octoprox.InvalidArgumentError):
+            octoprox.Query(engine="amortized").bind_boxes(np.zeros((3, 5)))
+        with self.assertRaisesRegex(octoprox.InvalidArgumentError, "OPX_ENGINE_AMORTIZED"):
+            octoprox.Query().bind_boxes([[0, 0, 0, 1, 1, 1]])
+        with self.assertRaisesRegex(octoprox.InvalidArgumentError, "boxes\\[0\\]"):
+            octoprox.Query(engine="amortized").bind_boxes([[0, 0, 0, 1, np.nan, 1]])
+
+
 class Paths(unittest.TestCase):
     def test_first_colliding_waypoint(self):
         tree = one_cell_map()

@@ -133,4 +133,36 @@ impl Query {
         self.cost_box_count = out.cost_box_count as usize;
         Ok(out)
     }
+
+    /// Binds a caller's boxes as the map (a context made with the amortized
+    /// engine only): each `[min x, min y, min z, max x, max y, max z]`, map
+    /// frame, metres; copied.  [`Query::collide_boxes`] and
+    /// [`Query::distance_boxes`] then query them, until the next bind or an
+    /// octree query.
+    pub fn bind_boxes(&mut self, boxes: &[[f64; 6]]) -> Result<()> {
+        let data = if boxes.is_empty() { ptr::null() } else { boxes.as_ptr() as *const f64 };
+        // SAFETY: boxes holds boxes.len() packed rows of 6 doubles.
+        check(unsafe { sys::opx_query_bind_boxes(self.raw, data, boxes.len(), 0) })
+    }
+
+    /// [`Query::collide`] against the bound boxes; a contact's cell centre
+    /// is a box's centre, its cell size the box's longest edge.
+    pub fn collide_boxes(&mut self, links: &LinkSet, request: &CollisionRequest)
+        -> Result<CollisionResult> {
+        let mut out = CollisionResult::default();
+        (self.contact_count, self.cost_box_count) = (0, 0);
+        // SAFETY: live handles; links is only read.
+        check(unsafe { sys::opx_query_collide_boxes(self.raw, links.as_raw(), request, &mut out) })?;
+        self.contact_count = out.contact_count as usize;
+        Ok(out)
+    }
+
+    /// [`Query::distance`] against the bound boxes.
+    pub fn distance_boxes(&mut self, links: &LinkSet, request: &DistanceRequest)
+        -> Result<DistanceResult> {
+        let mut out = DistanceResult::default();
+        // SAFETY: live handles; links is only read.
+        check(unsafe { sys::opx_query_distance_boxes(self.raw, links.as_raw(), request, &mut out) })?;
+        Ok(out)
+    }
 }

@@ -171,3 +171,21 @@ fn the_amortized_engine_gives_the_direct_answers() {
     let stats = amortized.stats().unwrap();
     assert_eq!((stats.engine, stats.builds, stats.boxes), (OPX_ENGINE_AMORTIZED, 1, 1));
 }
+
+#[test]
+fn caller_boxes_answer_like_the_cell_they_copy() {
+    let options = QueryOptions { engine: OPX_ENGINE_AMORTIZED, ..Default::default() };
+    let mut query = Query::new(&options).unwrap();
+    query.bind_boxes(&[[0.0, 0.0, 0.0, RES, RES, RES], [5.0, 5.0, 5.0, 6.0, 6.0, 6.0]]).unwrap();
+    let far = sphere_at(0.1, C0, C0, 1.0);
+    let expected = new_query().distance(&one_cell_map(), &far, &DistanceRequest::default()).unwrap();
+    let result = query.distance_boxes(&far, &DistanceRequest::default()).unwrap();
+    assert!((result.distance - expected.distance).abs() < 1e-12);
+    assert_eq!(result.cell_center, [C0, C0, C0]);
+    let touching = sphere_at(0.1, 0.35, C0, C0);
+    let hit = query.collide_boxes(&touching, &CollisionRequest::default()).unwrap();
+    assert_eq!((hit.collided, query.contacts().unwrap().len()), (1, 1));
+    // A direct context refuses boxes; NaN is refused.
+    assert!(new_query().bind_boxes(&[[0.0; 6]]).is_err());
+    assert!(query.bind_boxes(&[[0.0, 0.0, 0.0, 1.0, f64::NAN, 1.0]]).is_err());
+}
