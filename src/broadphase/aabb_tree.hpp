@@ -28,6 +28,7 @@ public:
     bool empty() const { return nodes_.empty(); }
     int32_t root() const { return 0; }
     const AabbTreeNode &node(int32_t index) const { return nodes_[index]; }
+    const AabbTreeNode *nodes() const { return nodes_.data(); }
     size_t size() const { return nodes_.size(); }
 
 private:

@@ -12,19 +12,17 @@ namespace octoprox {
 // Box distance, tightened by the shape itself when the node is one shape.
 // A pair the boxes already put beyond the bound returns that distance
 // (pruned by can_prune) without the square root or the shape's own test.
-double DirectDistance::lower_bound(int32_t robot_node, const Aabb &cell) const {
-    const AabbTreeNode &robot = links_->tree().node(robot_node);
+double DirectDistance::lower_bound(const AabbTreeNode &robot, const Aabb &cell) const {
     const double squared = robot.box.squared_distance(cell);
     if (bound_ > 1e-100 && squared >= bound_ * bound_) return bound_;  // no underflow
     const double boxes = std::sqrt(squared);
     if (!robot.is_leaf()) return boxes;
-    const PlacedShape &shape = links_->placed()[robot.item];
-    // A mesh's own bound is its box: already taken.
-    return shape.kind == ShapeKind::kMesh ? boxes : std::max(boxes, shape_lower_bound(shape, cell));
+    return std::max(boxes, shape_lower_bound(placed_[robot.item], cell));
 }
 
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
+    robot_ = links.tree().nodes(), placed_ = links.placed().data();
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
     // The boxes hold the leaves at or above the map's threshold: a query
@@ -71,7 +69,9 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
 void DirectDistance::search(int32_t robot_node) {
     const Cell root = root_cell(*view_);
     if (root.node == nullptr && !settings_.unknown_occupied) return;
-    recurse(root, robot_node, lower_bound(robot_node, bounding_box(root)));
+    const bool inner = is_inner(*view_, root);
+    const Aabb bounds = bounding_box(root, inner);
+    recurse(root, bounds, inner, robot_node, lower_bound(robot_[robot_node], bounds));
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by
@@ -90,28 +90,28 @@ bool DirectDistance::is_obstacle(const Cell &cell) const {
     return view_->log_odds(cell.node) >= settings_.threshold_log_odds;
 }
 
-void DirectDistance::recurse(const Cell &cell, int32_t robot_node, double lower) {
+void DirectDistance::recurse(const Cell &cell, const Aabb &bounds, bool inner, int32_t robot_node, double lower) {
     if (can_prune(lower)) return;
-    const AabbTreeNode &robot = links_->tree().node(robot_node);
-    const bool octree_leaf = cell.node == nullptr || !view_->has_children(cell.node);
-    if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot_node);
+    const AabbTreeNode &robot = robot_[robot_node];
+    const bool octree_leaf = !inner;
+    if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot);
     // As in collision: favour the robot until the cube is twice its node.
     if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
     // Nearer robot child first.
     int32_t first = robot.left, second = robot.right;
-    const Aabb cell_bound = bounding_box(cell);
-    double lower_first = lower_bound(first, cell_bound), lower_second = lower_bound(second, cell_bound);
+    double lower_first = lower_bound(robot_[first], bounds), lower_second = lower_bound(robot_[second], bounds);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
-    recurse(cell, first, lower_first);
-    recurse(cell, second, lower_second);
+    recurse(cell, bounds, inner, first, lower_first);
+    recurse(cell, bounds, inner, second, lower_second);
 }
 
 // Only the children within the current bound of the robot node's box,
 // without obstacles skipped (max log-odds below the threshold, or unknown
 // when unknown is free), nearest first by their lower bounds.
 void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
-    Aabb reach = links_->tree().node(robot_node).box;
+    const AabbTreeNode &robot = robot_[robot_node];
+    Aabb reach = robot.box;
     if (std::isfinite(bound_)) reach.inflate(std::max(bound_, 0.0));
     const Vec3 mid = mid_planes(cell, view_->resolution());
     const unsigned reached = std::isfinite(bound_) ? children_overlapping(reach, mid) : 0xFFu;
@@ -125,21 +125,26 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
         if (node == nullptr ? !settings_.unknown_occupied
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
-        Child &entry = children[count];
-        entry.cell = child_cell(cell, node, i, mid);
-        entry.lower = lower_bound(robot_node, bounding_box(entry.cell));
-        if (can_prune(entry.lower)) continue;
+        const bool inner = node != nullptr && view_->has_children(node);
+        const double lower = lower_bound(robot, bounding_box(child_cell(cell, node, i, mid), inner));
+        if (can_prune(lower)) continue;
+        children[count] = Child{node, lower, i, inner};
         // Insertion sort of indices: at most 8 children.
         int at = count;
-        for (; at > 0 && children[order[at - 1]].lower > entry.lower; --at) order[at] = order[at - 1];
+        for (; at > 0 && children[order[at - 1]].lower > lower; --at) order[at] = order[at - 1];
         order[at] = count++;
     }
-    for (int i = 0; i < count; ++i) recurse(children[order[i]].cell, robot_node, children[order[i]].lower);
+    for (int k = 0; k < count; ++k) {
+        const Child &next = children[order[k]];
+        if (can_prune(next.lower)) continue;  // a nearer sibling lowered the bound
+        const Cell child = child_cell(cell, next.node, next.index, mid);
+        recurse(child, bounding_box(child, next.inner), next.inner, robot_node, next.lower);
+    }
 }
 
-void DirectDistance::test_leaf_pair(const Cell &cell, int32_t robot_node) {
+void DirectDistance::test_leaf_pair(const Cell &cell, const AabbTreeNode &robot) {
     if (!is_obstacle(cell)) return;
-    const PlacedShape &shape = links_->placed()[links_->tree().node(robot_node).item];
+    const PlacedShape &shape = placed_[robot.item];
     if (shape.box.empty()) return;  // a disabled link
     if (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_)) return;
     const Aabb &box = cell.box;

@@ -23,25 +23,35 @@ public:
 
 private:
     using Cell = OctreeCell;
+    // A child of the cell being descended, before its box is rebuilt for
+    // the recursion: trivially constructible, so an array of eight costs
+    // nothing to set up (descend_octree is the hottest function).
     struct Child {
-        Cell cell;
+        OctreeView::NodeRef node;
         double lower;
+        int index;
+        bool inner;  // the node has children
     };
 
     void start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
     void search(int32_t robot_node);
-    void recurse(const Cell &cell, int32_t robot_node, double lower);
+    // `bounds`: where the cell's obstacles can lie (bounding_box(cell)), and
+    // `inner`: its node has children; the caller, which bounded the pair
+    // with them, computed both once.
+    void recurse(const Cell &cell, const Aabb &bounds, bool inner, int32_t robot_node, double lower);
     void descend_octree(const Cell &cell, int32_t robot_node);
-    void test_leaf_pair(const Cell &cell, int32_t robot_node);
+    void test_leaf_pair(const Cell &cell, const AabbTreeNode &robot);
     bool can_prune(double lower) const;
     bool is_obstacle(const Cell &cell) const;
-    double lower_bound(int32_t robot_node, const Aabb &cell) const;
-    Aabb bounding_box(const Cell &cell) const {
-        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_);
+    double lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
+    Aabb bounding_box(const Cell &cell, bool inner) const {
+        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_, inner);
     }
 
     const OctreeView *view_ = nullptr;
     const LinkSet *links_ = nullptr;
+    const AabbTreeNode *robot_ = nullptr;  // the link set's shape tree, read once per query
+    const PlacedShape *placed_ = nullptr;
     DistanceSettings settings_;
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance

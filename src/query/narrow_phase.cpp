@@ -91,6 +91,13 @@ double shape_lower_bound(const PlacedShape &shape, const Aabb &box) {
         const double half_length = 0.5 * (core.v[1] - core.v[0]).norm();
         return oriented_box_gap(core.center, core.axes, Vec3(0.0, 0.0, half_length), box) - shape.inflation;
     }
+    case ShapeKind::kMesh: {
+        // The root box of the mesh's tree, in the mesh frame: an oriented
+        // box in the map, far tighter than the map-frame box when rotated.
+        const Aabb &local = shape.def->mesh_tree.node(shape.def->mesh_tree.root()).box;
+        return oriented_box_gap(core.axes * local.center() + core.center, core.axes, local.half_extent(), box) -
+               shape.inflation;
+    }
     default: return std::sqrt(shape.box.squared_distance(box));
     }
 }

@@ -24,8 +24,8 @@ bool shape_may_touch(const PlacedShape &shape, const Aabb &box);
 
 // A lower bound of the padded shape's distance to the box (may be
 // negative): the true distance for spheres, the gap along the 6 face axes
-// of the shape's oriented box for boxes, cylinders and capsules, the box
-// distance otherwise.
+// of the shape's oriented box for boxes, cylinders and capsules, and of the
+// oriented root box of a mesh's tree for meshes, the box distance otherwise.
 double shape_lower_bound(const PlacedShape &shape, const Aabb &box);
 
 }  // namespace octoprox

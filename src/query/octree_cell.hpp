@@ -42,11 +42,18 @@ inline OctreeCell child_cell(const OctreeCell &cell, OctreeView::NodeRef child, 
 // The part of an inner cell's cube holding its obstacle leaves, from the
 // view's packed slots (bounded_tree.hpp), padded outwards by `pad` (see
 // obstacle_box_pad) so it always contains every obstacle leaf's exact box.
+// Slot numbers come from a table: the traversals decode a box per child
+// they bound, and six int-to-double conversions were a tenth of them.
 inline Aabb obstacle_box(const OctreeCell &cell, uint32_t packed, double pad) {
+    static constexpr double kSlot[33] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16,
+                                         17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32};
     const double slot = (cell.box.hi.x() - cell.box.lo.x()) * (1.0 / 32);
-    const Vec3 lo_slots(packed & 31, (packed >> 5) & 31, (packed >> 10) & 31);
-    const Vec3 hi_slots(((packed >> 15) & 31) + 1, ((packed >> 20) & 31) + 1, ((packed >> 25) & 31) + 1);
-    return Aabb{(cell.box.lo + slot * lo_slots).array() - pad, (cell.box.lo + slot * hi_slots).array() + pad};
+    Aabb box;
+    for (int axis = 0; axis < 3; ++axis) {
+        box.lo[axis] = cell.box.lo[axis] + slot * kSlot[(packed >> (5 * axis)) & 31] - pad;
+        box.hi[axis] = cell.box.lo[axis] + slot * kSlot[((packed >> (15 + 5 * axis)) & 31) + 1] + pad;
+    }
+    return box;
 }
 
 // Thousands of times the rounding error of any coordinate in the map cube
@@ -56,13 +63,23 @@ inline double obstacle_box_pad(double resolution) { return 1e-12 * kKeyCenter * 
 // What the obstacles of a cell's subtree can lie in: the box of its
 // obstacle leaves when `use_boxes` (the query's obstacles are leaves at or
 // above a threshold >= the view's bounds_threshold) and the node keeps one,
-// else its cube.
-inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad) {
-    if (use_boxes && cell.node != nullptr && view.has_children(cell.node)) {
+// else its cube.  `inner`: the cell's node has children (a caller that
+// knows it already saves OctoMap's scan of the child pointers).
+inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad,
+                            bool inner) {
+    if (use_boxes && inner) {
         const uint32_t packed = view.packed_obstacle_bounds(cell.node);
         if (packed != 0) return obstacle_box(cell, packed, pad);
     }
     return cell.box;
+}
+
+inline bool is_inner(const OctreeView &view, const OctreeCell &cell) {
+    return cell.node != nullptr && view.has_children(cell.node);
+}
+
+inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad) {
+    return obstacle_bounds(view, cell, use_boxes, pad, is_inner(view, cell));
 }
 
 // The children (bit i for child i) that a box overlapping the parent can
