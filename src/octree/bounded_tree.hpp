@@ -46,6 +46,14 @@ public:
 
     // Meaningful for nodes with children only; 0 when not valid.
     uint32_t packed_bounds() const { return packed_bounds_; }
+    // Whether the node has children, from the node alone.  OctoMap's
+    // nodeHasChildren also scans the child array (another cache line, and
+    // the traversals ask it of every child they bound); the array alone
+    // decides because every change our maps go through (updates, pruning,
+    // expanding, reading files) allocates it with a first child and frees
+    // it with the last.  Only OctoMap's deleteNode can leave an empty one,
+    // and no map of ours calls it (test unit_obstacle_bounds checks).
+    bool has_child_array() const { return children != nullptr; }
 
 private:
     uint32_t packed_bounds_ = 0;

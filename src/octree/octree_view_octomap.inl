@@ -16,7 +16,7 @@ inline OctreeView::NodeRef OctreeView::root() const {
 }
 
 inline bool OctreeView::has_children(NodeRef node) const {
-    return static_cast<const BoundedOcTree *>(tree_)->nodeHasChildren(static_cast<const BoundedNode *>(node));
+    return static_cast<const BoundedNode *>(node)->has_child_array();
 }
 
 inline OctreeView::NodeRef OctreeView::child(NodeRef node, int index) const {

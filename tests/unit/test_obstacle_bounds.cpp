@@ -41,8 +41,11 @@ struct Checker {
                 for (int a = 0; a < 3; ++a) leaves.lo[a] = cell.key[a], leaves.hi[a] = cell.key[a] + cell.width_in_cells();
             return leaves;
         }
+        int children = 0;
         for (int i = 0; i < 8; ++i)
-            if (OctreeView::NodeRef child = view.child(node, i)) leaves.grow(check(child, cell.child(i)));
+            if (OctreeView::NodeRef child = view.child(node, i)) leaves.grow(check(child, cell.child(i))), ++children;
+        // has_children reads only the child array: it must never be empty.
+        EXPECT_GT(children, 0) << "a child array without children at depth " << cell.depth;
         EXPECT_EQ(leaves.empty(), !(view.log_odds(node) >= threshold)) << "inner max log-odds disagrees";
         if (!leaves.empty()) expect_packed(view.packed_obstacle_bounds(node), cell, leaves);
         return leaves;
