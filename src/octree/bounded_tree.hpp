@@ -54,6 +54,7 @@ public:
     // it with the last.  Only OctoMap's deleteNode can leave an empty one,
     // and no map of ours calls it (test unit_obstacle_bounds checks).
     bool has_child_array() const { return children != nullptr; }
+    const void *child_array() const { return children; }
 
 private:
     uint32_t packed_bounds_ = 0;

@@ -61,6 +61,9 @@ public:
     // each is its own allocation, so a traversal that reads them one after
     // the other waits for one cache miss after another.
     void prefetch_children(NodeRef node, unsigned mask) const;
+    // Asks the CPU to fetch the array of an inner node's child pointers
+    // ahead of a descent into it (another allocation of its own).
+    void prefetch_child_array(NodeRef node) const;
 
 private:
     const void *tree_;

@@ -30,6 +30,10 @@ inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
         if (NodeRef next = child(node, __builtin_ctz(bits))) __builtin_prefetch(next);
 }
 
+inline void OctreeView::prefetch_child_array(NodeRef node) const {
+    __builtin_prefetch(static_cast<const BoundedNode *>(node)->child_array());
+}
+
 inline float OctreeView::log_odds(NodeRef node) const {
     return static_cast<const BoundedNode *>(node)->getLogOdds();
 }

@@ -126,8 +126,10 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
         const bool inner = node != nullptr && view_->has_children(node);
-        const double lower = lower_bound(robot, bounding_box(child_cell(cell, node, i, mid), inner));
+        const double lower = lower_bound(
+            robot, obstacle_bounds(*view_, node, child_box(cell.box, i, mid), use_obstacle_boxes_, box_pad_, inner));
         if (can_prune(lower)) continue;
+        if (inner) view_->prefetch_child_array(node);  // most survivors are descended
         children[count] = Child{node, lower, i, inner};
         // Insertion sort of indices: at most 8 children.
         int at = count;

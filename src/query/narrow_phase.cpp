@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace octoprox {
 namespace {
@@ -39,14 +40,21 @@ bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, con
 }
 
 // The largest gap between an oriented box and an axis-aligned box along
-// the face axes of both (<= their distance; <= 0 when not separated).
+// the oriented box's own face axes (<= their distance; <= 0 when not
+// separated there).  The map's axes are left out: every caller takes the
+// maximum with the distance of the shape's axis-aligned box, which is at
+// least the gap along any of them.
 double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half, const Aabb &box) {
     const Vec3 box_half = box.half_extent();
-    const Vec3 offset = center - box.center();
-    const Eigen::Matrix3d abs_axes = axes.cwiseAbs();
-    const double world_gap = (offset.cwiseAbs() - box_half - abs_axes * half).maxCoeff();
-    const double local_gap = ((axes.transpose() * offset).cwiseAbs() - half - abs_axes.transpose() * box_half).maxCoeff();
-    return std::max(world_gap, local_gap);
+    const Vec3 local = axes.transpose() * (center - box.center());
+    double gap = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 axis = axes.col(k);
+        const double box_reach =
+            std::abs(axis.x()) * box_half.x() + std::abs(axis.y()) * box_half.y() + std::abs(axis.z()) * box_half.z();
+        gap = std::max(gap, std::abs(local[k]) - half[k] - box_reach);
+    }
+    return gap;
 }
 
 // Depth-first over the mesh's triangle tree in the mesh's own frame, so a
