@@ -90,22 +90,13 @@ DistanceSettings distance_settings(const SensorOctree &tree, bool unknown_occupi
     return s;
 }
 
-using ContactRow = std::tuple<uint32_t, uint32_t, double, double, double, double, int, double>;
+// A contact as (link, shape, cell center, size, class, probability, depth).
+using ContactRow = std::tuple<uint32_t, uint32_t, double, double, double, double, int, double, double>;
 
 std::vector<ContactRow> rows_of(const std::vector<Contact> &contacts) {
     std::vector<ContactRow> rows;
     for (const Contact &c : contacts)
-        rows.emplace_back(c.link, c.shape, c.center[0], c.center[1], c.center[2], c.size, c.cell_class, c.probability);
-    std::sort(rows.begin(), rows.end());
-    return rows;
-}
-
-// Contact depths by (link, shape, cell): the same pair, the same kernel.
-std::vector<std::pair<ContactRow, double>> depths_of(const std::vector<Contact> &contacts) {
-    std::vector<std::pair<ContactRow, double>> rows;
-    for (const Contact &c : contacts)
-        rows.emplace_back(ContactRow(c.link, c.shape, c.center[0], c.center[1], c.center[2], c.size, c.cell_class,
-                                     c.probability),
+        rows.emplace_back(c.link, c.shape, c.center[0], c.center[1], c.center[2], c.size, c.cell_class, c.probability,
                           c.depth);
     std::sort(rows.begin(), rows.end());
     return rows;
@@ -136,6 +127,15 @@ protected:
     DirectCollider direct;
     DirectDistance direct_distance;
     std::vector<Contact> a_contacts, d_contacts;
+
+    // Both engines on one collision query: the same answer, the same
+    // contacts (depths too: the same pair, the same kernel).
+    void expect_same_contacts(const CollisionSettings &s, int trial) {
+        const CollisionOutcome a = amortized.collide(*tree, links, s, a_contacts);
+        const CollisionOutcome d = direct.collide(*tree, links, s, d_contacts);
+        ASSERT_EQ(a.collided, d.collided) << trial;
+        ASSERT_EQ(rows_of(a_contacts), rows_of(d_contacts)) << trial;
+    }
 };
 
 TEST_F(AmortizedParity, MapHasEveryKindOfCell) {
@@ -196,10 +196,7 @@ TEST_F(AmortizedParity, CostEqualsTheDirectEngines) {
         const CollisionSettings s = cost_settings(*tree, unknown_occupied != 0);
         for (int trial = 0; trial < 150; ++trial) {
             random_poses(links, rng);
-            const CollisionOutcome a = amortized.collide(*tree, links, s, a_contacts);
-            const CollisionOutcome d = direct.collide(*tree, links, s, d_contacts);
-            ASSERT_EQ(a.collided, d.collided) << trial;
-            ASSERT_EQ(rows_of(a_contacts), rows_of(d_contacts)) << trial;
+            ASSERT_NO_FATAL_FAILURE(expect_same_contacts(s, trial));
             double a_total = 0.0, d_total = 0.0;
             const std::vector<CostRow> a_rows = cost_rows(links, amortized.cost(), a_total);
             const std::vector<CostRow> d_rows = cost_rows(links, direct.cost(), d_total);
@@ -219,10 +216,7 @@ TEST_F(AmortizedParity, UnknownOccupiedEqualsTheDirectEngines) {
     std::vector<double> a_links, d_links;
     for (int trial = 0; trial < 200; ++trial) {
         random_poses(links, rng);
-        const CollisionOutcome a = amortized.collide(*tree, links, s, a_contacts);
-        const CollisionOutcome d = direct.collide(*tree, links, s, d_contacts);
-        ASSERT_EQ(a.collided, d.collided) << trial;
-        ASSERT_EQ(rows_of(a_contacts), rows_of(d_contacts)) << trial;
+        ASSERT_NO_FATAL_FAILURE(expect_same_contacts(s, trial));
         for (const Contact &c : a_contacts) unknown_contacts += c.cell_class == kUnknown ? 1 : 0;
         const DistanceOutcome ad = amortized.distance(*tree, links, ds, &a_links);
         const DistanceOutcome dd = direct_distance.run_per_link(*tree, links, ds, d_links);
@@ -241,9 +235,7 @@ TEST_F(AmortizedParity, PenetrationAndSignedDistanceEqualTheDirectEngines) {
         const DistanceSettings ds = distance_settings(*tree, unknown_occupied != 0, true);
         for (int trial = 0; trial < 150; ++trial) {
             random_poses(links, rng);
-            amortized.collide(*tree, links, s, a_contacts);
-            direct.collide(*tree, links, s, d_contacts);
-            ASSERT_EQ(depths_of(a_contacts), depths_of(d_contacts)) << trial;
+            ASSERT_NO_FATAL_FAILURE(expect_same_contacts(s, trial));
             const DistanceOutcome ad = amortized.distance(*tree, links, ds, nullptr);
             const DistanceOutcome dd = direct_distance.run(*tree, links, ds);
             ASSERT_EQ(ad.found, dd.found);
