@@ -23,10 +23,13 @@ typedef struct opx_query opx_query;
 /* Amortized (paper IV.A): the first query on an octree frame turns its
  * obstacle cells into boxes in a Morton-built tree held by the context
  * (rebuilt when the octree changes or the threshold differs); every query
- * then refines that tree a little.  Collision and distance run on it with
- * the same exact tests, so answers equal the direct engine's.  Queries
- * that need the octree itself (OPX_UNKNOWN_OCCUPIED, compute_cost,
- * compute_penetration, signed_distance, paths) run the direct engine. */
+ * then refines the trees it used a little.  Collision, distance, cost and
+ * paths (every option: OPX_UNKNOWN_OCCUPIED, compute_cost,
+ * compute_penetration, signed_distance) run on the context's trees with
+ * the same exact tests, so answers equal the direct engine's.  The first
+ * query that needs them also builds, once per frame, a tree of the unknown
+ * cubes (OPX_UNKNOWN_OCCUPIED, or cost) and one of the uncertain cells
+ * (cost); plain collision and distance never pay for them. */
 #define OPX_ENGINE_AMORTIZED 2
 
 typedef struct opx_query_options {
@@ -47,14 +50,17 @@ OPX_API void opx_query_destroy(opx_query *query);
 typedef struct opx_query_stats {
     uint32_t struct_size;
     int32_t engine;
-    uint64_t boxes;             /* obstacle boxes in the bound tree */
-    uint64_t builds;            /* trees built (one per octree frame bound) */
-    uint64_t refine_steps_done; /* since the last build */
+    uint64_t boxes;             /* obstacle boxes in the bound tree (not the unknown or uncertain ones) */
+    /* Trees built: one per octree frame (or threshold) bound, plus, once per
+     * frame, the unknown-cube tree and the uncertain-cell tree (per
+     * threshold) when a query first needs them. */
+    uint64_t builds;
+    uint64_t refine_steps_done; /* on the obstacle tree, since its last build */
     /* Surface-area cost of the tree over that of a top-down median-split
      * tree on the same boxes (computed on demand: O(n log n)); 1 when empty. */
-    double sah_ratio;
+    double sah_ratio;           /* of the obstacle tree */
     double extract_ms;          /* last bind: obstacle cells to boxes (paper T_{1,1}) */
-    double build_ms;            /* last bind: boxes to the tree (paper ~T_{1,2}) */
+    double build_ms;            /* last bind: boxes to the obstacle tree (paper ~T_{1,2}) */
 } opx_query_stats;
 
 #define OPX_QUERY_STATS_INIT {sizeof(opx_query_stats), 0, 0, 0, 0, 0.0, 0.0, 0.0}

@@ -21,8 +21,8 @@ namespace {
 
 class CellExtractor {
 public:
-    CellExtractor(const OctreeView &view, const CellBands &bands, CellBoxes &occupied,
-                  CellBoxes *uncertain)
+    // Either output may be null (not wanted).
+    CellExtractor(const OctreeView &view, const CellBands &bands, CellBoxes *occupied, CellBoxes *uncertain)
         : view_(view), bands_(bands), occupied_(occupied), uncertain_(uncertain),
           // With no uncertain output, only obstacle leaves matter.
           lowest_wanted_(uncertain != nullptr ? bands.free_log_odds : bands.threshold_log_odds) {}
@@ -39,14 +39,14 @@ public:
                 if (OctreeView::NodeRef child = view_.child(node, i)) visit(child, key.child(i));
             return;
         }
-        if (l >= bands_.threshold_log_odds) occupied_.add(cell_box(key, view_.resolution()), key, l);
-        else if (uncertain_ != nullptr) uncertain_->add(cell_box(key, view_.resolution()), key, l);
+        CellBoxes *band = l >= bands_.threshold_log_odds ? occupied_ : uncertain_;
+        if (band != nullptr) band->add(cell_box(key, view_.resolution()), key, l);
     }
 
 private:
     const OctreeView &view_;
     const CellBands &bands_;
-    CellBoxes &occupied_;
+    CellBoxes *occupied_;
     CellBoxes *uncertain_;
     float lowest_wanted_;
 };
@@ -58,7 +58,35 @@ void extract_cell_boxes(const OctreeView &view, const CellBands &bands, CellBoxe
     occupied.clear();
     if (uncertain != nullptr) uncertain->clear();
     if (OctreeView::NodeRef root = view.root())
-        CellExtractor(view, bands, occupied, uncertain).visit(root, CellKey{});
+        CellExtractor(view, bands, &occupied, uncertain).visit(root, CellKey{});
+}
+
+void extract_uncertain_boxes(const OctreeView &view, const CellBands &bands, CellBoxes &uncertain) {
+    uncertain.clear();
+    if (OctreeView::NodeRef root = view.root())
+        CellExtractor(view, bands, nullptr, &uncertain).visit(root, CellKey{});
+}
+
+namespace {
+
+// Recursion depth is bounded by kTreeDepth.
+void add_missing_children(const OctreeView &view, OctreeView::NodeRef node, const CellKey &key,
+                          CellBoxes &unknown) {
+    if (!view.has_children(node)) return;
+    for (int i = 0; i < 8; ++i) {
+        const CellKey child_key = key.child(i);
+        if (OctreeView::NodeRef child = view.child(node, i)) add_missing_children(view, child, child_key, unknown);
+        else unknown.add(cell_box(child_key, view.resolution()), child_key, 0.0f);
+    }
+}
+
+}  // namespace
+
+void extract_unknown_boxes(const OctreeView &view, CellBoxes &unknown) {
+    unknown.clear();
+    const OctreeView::NodeRef root = view.root();
+    if (root == nullptr) unknown.add(cell_box(CellKey{}, view.resolution()), CellKey{}, 0.0f);
+    else add_missing_children(view, root, CellKey{}, unknown);
 }
 
 void extract_cell_boxes(const SensorOctree &tree, const CellBands &bands, CellBoxes &occupied,

@@ -1,6 +1,7 @@
 // The paper's T_{1,1}: the boxes of the octree cells a broad phase manages,
-// read off a sensor octree (occupied cells for collision and distance, and
-// uncertain cells for cost, paper IV.C).
+// read off a sensor octree (occupied cells for collision and distance,
+// uncertain cells and unknown cubes for cost, paper IV.C, and unknown
+// cubes as obstacles when unknown space counts as occupied).
 #pragma once
 
 #include "geometry/aabb.hpp"
@@ -43,5 +44,14 @@ void extract_cell_boxes(const OctreeView &view, const CellBands &bands, CellBoxe
                         CellBoxes *uncertain);
 void extract_cell_boxes(const SensorOctree &tree, const CellBands &bands, CellBoxes &occupied,
                         CellBoxes *uncertain);
+// Only the uncertain band (cleared first): what a cost query adds to a
+// context already holding the obstacle cells.
+void extract_uncertain_boxes(const OctreeView &view, const CellBands &bands, CellBoxes &uncertain);
+
+// Fills `unknown` (cleared first) with the unknown cubes: every missing
+// child of an inner node, at its own depth and size, or the whole map cube
+// when the map is empty; log-odds 0.  Unknown space is bounded by the map
+// cube, as in the query engines (query/octree_cell.hpp).
+void extract_unknown_boxes(const OctreeView &view, CellBoxes &unknown);
 
 }  // namespace octoprox

@@ -78,8 +78,7 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, 
         read_versioned(request, merged, "request");
         const DistanceSettings settings = read_distance_request(merged, *tree->tree);
         query->link_distances.clear();
-        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED && !settings.unknown_occupied &&
-                               !settings.signed_distance;
+        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED;
         const DistanceOutcome outcome =
             amortized ? query->amortized.distance(*tree->tree, links->links, settings,
                                                   merged.per_link ? &query->link_distances : nullptr)

@@ -83,7 +83,9 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, cons
         };
         query->resolution = octree.params().resolution;
         query->contacts.clear();
-        const PathOutcome o = query->path.run(octree, links->links, waypoint_count, poses_of, settings, query->cost_boxes);
+        AmortizedEngine *amortized = query->engine == OPX_ENGINE_AMORTIZED ? &query->amortized : nullptr;
+        const PathOutcome o =
+            query->path.run(octree, links->links, waypoint_count, poses_of, settings, query->cost_boxes, amortized);
         opx_path_result result = OPX_PATH_RESULT_INIT;
         result.collided = o.first_collision >= 0 ? 1 : 0;
         result.first_colliding_waypoint = o.first_collision;

@@ -158,11 +158,11 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         read_versioned(request, merged, "request");
         const CollisionSettings settings = collision_settings(merged, *tree->tree);
         query->resolution = tree->tree->params().resolution;
-        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED && !settings.unknown_occupied &&
-                               !settings.cost && !settings.penetration;
+        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED;
         const CollisionOutcome outcome =
             amortized ? query->amortized.collide(*tree->tree, links->links, settings, query->contacts)
                       : query->direct.collide(*tree->tree, links->links, settings, query->contacts);
+        CostCollector &cost_pairs = amortized ? query->amortized.cost() : query->direct.cost();
         opx_collision_result result = OPX_COLLISION_RESULT_INIT;
         result.collided = outcome.collided ? 1 : 0;
         result.contact_count = query->contacts.size();
@@ -170,8 +170,8 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         result.narrow_tests = outcome.narrow_tests;
         query->cost_boxes.clear();
         if (settings.cost) {
-            link_boxes(links->links, query->direct.cost(), query->link_boxes);
-            const CostSummary cost = query->direct.cost().finish(query->link_boxes, settings.max_cost_boxes, query->cost_boxes);
+            link_boxes(links->links, cost_pairs, query->link_boxes);
+            const CostSummary cost = cost_pairs.finish(query->link_boxes, settings.max_cost_boxes, query->cost_boxes);
             result.total_cost = cost.total;
             result.cost_boxes_found = cost.box_count;
             result.cost_box_count = query->cost_boxes.size();

@@ -140,12 +140,7 @@ void DirectCollider::record(const Cell &cell, const PlacedShape &shape) {
         c.cell_class = tree_->classify_log_odds(view_->log_odds(cell.node));
         c.probability = probability_from_log_odds(view_->log_odds(cell.node));
     }
-    if (settings_.penetration) {
-        const ShapePenetration p = shape_penetration(shape, cell.box.center(), cell.box.half_extent());
-        c.depth = p.depth;
-        const Vec3 middle = 0.5 * (p.on_link + p.on_cell);
-        for (int axis = 0; axis < 3; ++axis) c.normal[axis] = p.normal[axis], c.position[axis] = middle[axis];
-    }
+    if (settings_.penetration) set_contact_penetration(shape, cell.box, c);
     contacts_->push_back(c);
     if (contacts_->size() >= settings_.max_contacts && settings_.max_contacts <= 1) settle_obstacles();
 }

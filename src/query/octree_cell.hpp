@@ -15,10 +15,19 @@ struct OctreeCell {
     Aabb box;
 };
 
+// Each face an integer times the resolution, rounded once: the same
+// doubles as the parents' mid-planes (key.center of a cell two or more
+// cells wide is an integer times the resolution), so cell_box(key) equals
+// the box the engines cut from the root with child_cell, bit for bit.
 inline Aabb cell_box(const CellKey &key, double resolution) {
-    const double half = 0.5 * key.size(resolution);
-    const Vec3 center(key.center(0, resolution), key.center(1, resolution), key.center(2, resolution));
-    return Aabb::from_center(center, Vec3::Constant(half));
+    Aabb box;
+    const int32_t width = key.width_in_cells();
+    for (int axis = 0; axis < 3; ++axis) {
+        const int32_t lo = static_cast<int32_t>(key.key[axis]) - kKeyCenter;
+        box.lo[axis] = static_cast<double>(lo) * resolution;
+        box.hi[axis] = static_cast<double>(lo + width) * resolution;
+    }
+    return box;
 }
 
 inline OctreeCell root_cell(const OctreeView &view) {

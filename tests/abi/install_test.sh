@@ -68,8 +68,10 @@ run_installed "$work/quickstart-pc"
 
 step "the installed octoprox tool runs (RUNPATH \$ORIGIN/../$libdir, no LD_LIBRARY_PATH)"
 [[ -x $prefix/bin/octoprox ]] || fail "no $prefix/bin/octoprox"
-ldd "$prefix/bin/octoprox" | grep -q "liboctoprox.so.* => $prefix/" \
+# Whole outputs, not pipes into grep -q: with pipefail, a writer still
+# writing when grep -q has matched and exited dies of SIGPIPE (flaky under load).
+grep -q "liboctoprox.so.* => $prefix/" <<<"$(ldd "$prefix/bin/octoprox")" \
     || fail "$prefix/bin/octoprox does not load liboctoprox from $prefix"
-"$prefix/bin/octoprox" --version | grep -q "^octoprox [0-9]" || fail "octoprox --version"
+grep -q "^octoprox [0-9]" <<<"$("$prefix/bin/octoprox" --version)" || fail "octoprox --version"
 
 step "OK: quickstart builds and runs against the installed octoprox both ways; the tool runs"

@@ -1,0 +1,117 @@
+// The amortized engine's bands: which cells of a frame it holds as boxes,
+// when each tree is (re)built, and the cost pass over the uncertain cells
+// and unknown cubes (paper IV.C).
+#include "query/amortized.hpp"
+
+#include "query/narrow_phase.hpp"
+
+#include <chrono>
+
+namespace octoprox {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+Aabb intersection(const Aabb &a, const Aabb &b) { return Aabb{a.lo.cwiseMax(b.lo), a.hi.cwiseMin(b.hi)}; }
+
+bool has_volume(const Aabb &box) { return (box.lo.array() < box.hi.array()).all(); }
+
+}  // namespace
+
+void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
+    const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, threshold_log_odds};
+    if (!caller_boxes_ && obstacles_.key == key) return;
+    const auto start = Clock::now();
+    CellBands bands;
+    bands.threshold_log_odds = threshold_log_odds;
+    bands.free_log_odds = threshold_log_odds;
+    extract_cell_boxes(tree, bands, obstacles_.cells, nullptr);
+    extract_ms_ = ms_since(start);
+    build_ms_ = build_tree(obstacles_);
+    caller_boxes_ = false;
+    obstacles_.key = key;
+}
+
+// T_{1,1} is the copy of the caller's boxes here.
+void AmortizedEngine::bind_boxes(std::vector<Aabb> boxes) {
+    const auto start = Clock::now();
+    obstacles_.cells.clear();
+    obstacles_.cells.boxes = std::move(boxes);
+    extract_ms_ = ms_since(start);
+    build_ms_ = build_tree(obstacles_);
+    caller_boxes_ = true;
+    obstacles_.key = BandKey();  // no octree has identity 0: the next octree query binds
+}
+
+// Unknown cubes depend on the frame only, not on any threshold.
+void AmortizedEngine::bind_unknown(const SensorOctree &tree) {
+    const BandKey key{tree.identity(), tree.generation(), 0.0f, 0.0f};
+    if (unknown_.key == key) return;
+    extract_unknown_boxes(tree.view(), unknown_.cells);
+    unknown_.unknown = true;
+    build_tree(unknown_);
+    unknown_.key = key;
+}
+
+void AmortizedEngine::bind_uncertain(const SensorOctree &tree, float threshold_log_odds, float free_log_odds) {
+    const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, free_log_odds};
+    if (uncertain_.key == key) return;
+    CellBands bands;
+    bands.threshold_log_odds = threshold_log_odds;
+    bands.free_log_odds = free_log_odds;
+    extract_uncertain_boxes(tree.view(), bands, uncertain_.cells);
+    build_tree(uncertain_);
+    uncertain_.key = key;
+}
+
+double AmortizedEngine::build_tree(Band &band) {
+    const auto start = Clock::now();
+    BoxTreeOptions options;
+    options.morton_bits = options_.morton_bits;
+    band.tree.build(band.cells.boxes, options);
+    ++builds_;
+    return ms_since(start);
+}
+
+AmortizedStats AmortizedEngine::stats() const {
+    return AmortizedStats{obstacles_.cells.boxes.size(), builds_, obstacles_.tree.refine_steps_done(), extract_ms_,
+                          build_ms_};
+}
+
+// The direct engine's cost rules (DirectCollider::test_cost): an uncertain
+// cell counts wholly, an unknown cube only clipped to the region (a cube
+// that only touches the region adds no volume: no box); unknown space that
+// is an obstacle (OPX_UNKNOWN_OCCUPIED) is no cost.
+void AmortizedEngine::collect_cost(const LinkSet &links, const CollisionSettings &settings, uint64_t &narrow_tests) {
+    cost_.clear();
+    const bool unknown_cost = !settings.unknown_occupied;
+    const Aabb &region = settings.region;
+    for (const PlacedShape &shape : links.placed()) {
+        if (shape.box.empty()) continue;
+        uncertain_.tree.for_each_leaf_if(
+            [&](const Aabb &box) { return box.overlaps(shape.box) && shape_may_touch(shape, box); },
+            [&](int32_t item) {
+                const Aabb &cell = uncertain_.cells.boxes[item];
+                if (!shape_touches_cell(shape, cell.center(), cell.half_extent(), narrow_tests)) return;
+                cost_.add(shape.link, uncertain_.cells.keys[item], kUncertain,
+                          probability_from_log_odds(uncertain_.cells.log_odds[item]), cell);
+            });
+        if (!unknown_cost) continue;
+        unknown_.tree.for_each_leaf_if(
+            [&](const Aabb &box) {
+                return box.overlaps(shape.box) && box.overlaps(region) && shape_may_touch(shape, box);
+            },
+            [&](int32_t item) {
+                const Aabb part = intersection(unknown_.cells.boxes[item], region);
+                if (!has_volume(part)) return;
+                if (!shape_touches_cell(shape, part.center(), part.half_extent(), narrow_tests)) return;
+                cost_.add(shape.link, unknown_.cells.keys[item], kUnknown, settings.unknown_probability, part);
+            });
+    }
+    refine(uncertain_);
+    if (unknown_cost) refine(unknown_);
+}
+
+}  // namespace octoprox
