@@ -328,10 +328,11 @@ OPX_API opx_status opx_query_bind_boxes(opx_query *query, const double *boxes, s
  * Collision and distance against the bound boxes, with the octree queries'
  * exact tests, results and rules (max_contacts, cutoff, per_link).  A box
  * is reported as a cell: cell_center its centre, cell_size its LONGEST edge,
- * class OPX_CELL_OCCUPIED, probability 1.  occupancy_threshold and
- * unknown_policy do not apply (they are only checked); compute_cost,
- * compute_penetration and signed_distance are errors.  Without bound boxes:
- * OPX_ERROR_INVALID_ARGUMENT.
+ * class OPX_CELL_OCCUPIED, probability 1.  compute_penetration and
+ * signed_distance work as for octrees (the depth of a shape into a box).
+ * occupancy_threshold and unknown_policy do not apply (they are only
+ * checked); compute_cost is an error (boxes have no uncertain or unknown
+ * space).  Without bound boxes: OPX_ERROR_INVALID_ARGUMENT.
  */
 OPX_API opx_status opx_query_collide_boxes(opx_query *query, const opx_linkset *links,
                                            const opx_collision_request *request,

@@ -57,22 +57,21 @@ void check_shared_fields(int32_t unknown_policy, double threshold) {
 CollisionSettings box_collision_settings(const opx_collision_request &r) {
     check_shared_fields(r.unknown_policy, r.occupancy_threshold);
     if (r.compute_cost) throw_invalid("request->compute_cost: caller boxes have no uncertain or unknown space");
-    if (r.compute_penetration)
-        throw_invalid("request->compute_penetration is not available for caller boxes (use an octree)");
     CollisionSettings s;
     s.max_contacts = r.max_contacts;
+    s.penetration = r.compute_penetration != 0;
     return s;
 }
 
 DistanceSettings box_distance_settings(const opx_distance_request &r) {
     check_shared_fields(r.unknown_policy, r.occupancy_threshold);
-    if (r.signed_distance) throw_invalid("request->signed_distance is not available for caller boxes (use an octree)");
     if (!(r.abs_err >= 0.0) || !std::isfinite(r.abs_err) || !(r.rel_err >= 0.0) || !std::isfinite(r.rel_err))
         throw_invalid(format("request->abs_err %g / rel_err %g: finite values >= 0 are needed", r.abs_err, r.rel_err));
     if (std::isnan(r.cutoff) || r.cutoff < 0.0)
         throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
     DistanceSettings s;
     s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
+    s.signed_distance = r.signed_distance != 0;
     return s;
 }
 
