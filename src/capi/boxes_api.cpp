@@ -5,8 +5,8 @@
 #include "capi/request_checks.hpp"
 #include "query/narrow_phase.hpp"
 
+#include <cmath>
 #include <cstring>
-#include <limits>
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -65,14 +65,7 @@ CollisionSettings box_collision_settings(const opx_collision_request &r) {
 
 DistanceSettings box_distance_settings(const opx_distance_request &r) {
     check_shared_fields(r.unknown_policy, r.occupancy_threshold);
-    if (!(r.abs_err >= 0.0) || !std::isfinite(r.abs_err) || !(r.rel_err >= 0.0) || !std::isfinite(r.rel_err))
-        throw_invalid(format("request->abs_err %g / rel_err %g: finite values >= 0 are needed", r.abs_err, r.rel_err));
-    if (std::isnan(r.cutoff) || r.cutoff < 0.0)
-        throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
-    DistanceSettings s;
-    s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
-    s.signed_distance = r.signed_distance != 0;
-    return s;
+    return read_distance_bounds(r);
 }
 
 opx_distance_result box_distance_to_abi(const DistanceOutcome &o, const DistanceSettings &s, const opx_query &q) {

@@ -4,29 +4,16 @@
 #include "capi/request_checks.hpp"
 #include "query/narrow_phase.hpp"
 
-#include <limits>
 
 using namespace octoprox;
 using namespace octoprox::capi;
 
 namespace {
 
-void require_error_bound(double value, const char *argument) {
-    if (!(value >= 0.0) || !std::isfinite(value))
-        throw_invalid(format("%s is %g; a finite value >= 0 is needed", argument, value));
-}
-
 DistanceSettings read_distance_request(const opx_distance_request &r, const SensorOctree &tree) {
-    require_error_bound(r.abs_err, "request->abs_err");
-    require_error_bound(r.rel_err, "request->rel_err");
-    if (std::isnan(r.cutoff) || r.cutoff < 0.0)
-        throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
-    DistanceSettings s;
+    DistanceSettings s = read_distance_bounds(r);
     s.unknown_occupied = read_unknown_policy(r.unknown_policy, "request->unknown_policy");
     s.threshold_log_odds = read_threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
-    s.abs_err = r.abs_err, s.rel_err = r.rel_err;
-    s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
-    s.signed_distance = r.signed_distance != 0;
     return s;
 }
 

@@ -2,7 +2,8 @@
 
 #include "capi/error.hpp"
 
-#include <octoprox/query.h>
+#include <cmath>
+#include <limits>
 
 namespace octoprox::capi {
 
@@ -17,6 +18,27 @@ float read_threshold_log_odds(double threshold, const SensorOctree &tree, const 
         throw_invalid(format("%s is %g; 0 (the octree's) or a probability strictly between 0 and 1 is needed",
                              argument, threshold));
     return static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
+}
+
+namespace {
+
+void require_error_bound(double value, const char *argument) {
+    if (!(value >= 0.0) || !std::isfinite(value))
+        throw_invalid(format("%s is %g; a finite value >= 0 is needed", argument, value));
+}
+
+}  // namespace
+
+DistanceSettings read_distance_bounds(const opx_distance_request &r) {
+    require_error_bound(r.abs_err, "request->abs_err");
+    require_error_bound(r.rel_err, "request->rel_err");
+    if (std::isnan(r.cutoff) || r.cutoff < 0.0)
+        throw_invalid(format("request->cutoff is %g; 0 (none) or a positive distance is needed", r.cutoff));
+    DistanceSettings s;
+    s.abs_err = r.abs_err, s.rel_err = r.rel_err;
+    s.cutoff = r.cutoff > 0.0 ? r.cutoff : std::numeric_limits<double>::infinity();
+    s.signed_distance = r.signed_distance != 0;
+    return s;
 }
 
 }  // namespace octoprox::capi
