@@ -20,6 +20,10 @@ double DirectDistance::lower_bound(const AabbTreeNode &robot, const Aabb &cell) 
     return std::max(boxes, shape_lower_bound(placed_[robot.item], cell));
 }
 
+double DirectDistance::box_lower_bound(const AabbTreeNode &robot, const Aabb &cell) const {
+    return std::sqrt(robot.box.squared_distance(cell));
+}
+
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     robot_ = links.tree().nodes(), placed_ = links.placed().data();
@@ -98,9 +102,11 @@ void DirectDistance::recurse(const Cell &cell, const Aabb &bounds, bool inner, i
     // As in collision: favour the robot until the cube is twice its node.
     if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
-    // Nearer robot child first.
+    // Nearer robot child first, by their boxes alone: a shape's own bound
+    // here, against a cell still larger than the robot node, rarely prunes
+    // what the descent below would not, and cost 6% of a scene F query.
     int32_t first = robot.left, second = robot.right;
-    double lower_first = lower_bound(robot_[first], bounds), lower_second = lower_bound(robot_[second], bounds);
+    double lower_first = box_lower_bound(robot_[first], bounds), lower_second = box_lower_bound(robot_[second], bounds);
     if (lower_second < lower_first) std::swap(first, second), std::swap(lower_first, lower_second);
     recurse(cell, bounds, inner, first, lower_first);
     recurse(cell, bounds, inner, second, lower_second);

@@ -44,6 +44,7 @@ private:
     bool can_prune(double lower) const;
     bool is_obstacle(const Cell &cell) const;
     double lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
+    double box_lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
     Aabb bounding_box(const Cell &cell, bool inner) const {
         return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_, inner);
     }
