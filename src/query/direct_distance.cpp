@@ -132,11 +132,12 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
         const bool inner = node != nullptr && view_->has_children(node);
-        const double lower = lower_bound(
-            robot, obstacle_bounds(*view_, node, child_box(cell.box, i, mid), use_obstacle_boxes_, box_pad_, inner));
+        const Aabb bounds =
+            obstacle_bounds(*view_, node, child_box(cell.box, i, mid), use_obstacle_boxes_, box_pad_, inner);
+        const double lower = lower_bound(robot, bounds);
         if (can_prune(lower)) continue;
         if (inner) view_->prefetch_child_array(node);  // most survivors are descended
-        children[count] = Child{node, lower, i, inner};
+        children[count] = Child{node, lower, i, inner, bounds.lo, bounds.hi};
         // Insertion sort of indices: at most 8 children.
         int at = count;
         for (; at > 0 && children[order[at - 1]].lower > lower; --at) order[at] = order[at - 1];
@@ -146,7 +147,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
         const Child &next = children[order[k]];
         if (can_prune(next.lower)) continue;  // a nearer sibling lowered the bound
         const Cell child = child_cell(cell, next.node, next.index, mid);
-        recurse(child, bounding_box(child, next.inner), next.inner, robot_node, next.lower);
+        recurse(child, Aabb{next.bounds_lo, next.bounds_hi}, next.inner, robot_node, next.lower);
     }
 }
 

@@ -23,14 +23,17 @@ public:
 
 private:
     using Cell = OctreeCell;
-    // A child of the cell being descended, before its box is rebuilt for
-    // the recursion: trivially constructible, so an array of eight costs
-    // nothing to set up (descend_octree is the hottest function).
+    // A child of the cell being descended, before its cube is rebuilt for
+    // the recursion, with the bounds its lower bound was computed from
+    // (bounding_box of the child cell).  No default member initializers,
+    // so an array of eight costs nothing to set up (descend_octree is the
+    // hottest function).
     struct Child {
         OctreeView::NodeRef node;
         double lower;
         int index;
         bool inner;  // the node has children
+        Vec3 bounds_lo, bounds_hi;
     };
 
     void start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
