@@ -106,8 +106,7 @@ OPX_API opx_status opx_query_collide_boxes(opx_query *query, const opx_linkset *
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_pointer(links, "links");
-        require_pointer(out_result, "out_result");
-        require_struct_size(out_result->struct_size, "out_result");
+        require_out_struct(out_result, "out_result");
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const CollisionSettings settings = box_collision_settings(merged);
@@ -129,8 +128,7 @@ OPX_API opx_status opx_query_distance_boxes(opx_query *query, const opx_linkset 
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_pointer(links, "links");
-        require_pointer(out_result, "out_result");
-        require_struct_size(out_result->struct_size, "out_result");
+        require_out_struct(out_result, "out_result");
         opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const DistanceSettings settings = box_distance_settings(merged);

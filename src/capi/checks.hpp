@@ -28,6 +28,14 @@ inline void require_struct_size(uint32_t struct_size, const char *argument) {
                               argument, struct_size));
 }
 
+// A caller's versioned result struct: not NULL, its struct_size set.
+// Shims check it before any work, so a bad one costs no query.
+template <class T>
+void require_out_struct(const T *out, const char *argument) {
+    require_pointer(out, argument);
+    require_struct_size(out->struct_size, argument);
+}
+
 // Reads a caller's versioned struct over the defaults already in `out`:
 // only the fields the caller's version knows are taken.  in may be NULL
 // (defaults kept).
@@ -43,8 +51,7 @@ void read_versioned(const T *in, T &out, const char *argument) {
 // struct_size, which is kept.
 template <class T>
 void write_versioned(T *out, const T &value, const char *argument) {
-    require_pointer(out, argument);
-    require_struct_size(out->struct_size, argument);
+    require_out_struct(out, argument);
     const uint32_t caller_size = out->struct_size;
     std::memcpy(out, &value, std::min<size_t>(caller_size, sizeof(T)));
     out->struct_size = caller_size;

@@ -75,8 +75,7 @@ OPX_API opx_status opx_octree_classify(const opx_octree *tree, const double poin
     return guard(__func__, [&] {
         require_pointer(tree, "tree");
         require_pointer(point, "point");
-        require_pointer(out, "out");
-        require_struct_size(out->struct_size, "out");
+        require_out_struct(out, "out");
         const Vec3 p(point[0], point[1], point[2]);
         for (int axis = 0; axis < 3; ++axis) {
             if (!std::isfinite(point[axis]))
@@ -93,8 +92,7 @@ OPX_API opx_status opx_octree_classify(const opx_octree *tree, const double poin
 OPX_API opx_status opx_octree_get_stats(const opx_octree *tree, opx_octree_stats *out) {
     return guard(__func__, [&] {
         require_pointer(tree, "tree");
-        require_pointer(out, "out");
-        require_struct_size(out->struct_size, "out");
+        require_out_struct(out, "out");
         write_versioned(out, stats_to_abi(tree->tree->stats(), tree->tree->params().resolution), "out");
         return OPX_OK;
     });

@@ -66,8 +66,7 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, cons
         require_pointer(query, "query");
         require_pointer(tree, "tree");
         require_pointer(links, "links");
-        require_pointer(out_result, "out_result");
-        require_struct_size(out_result->struct_size, "out_result");
+        require_out_struct(out_result, "out_result");
         opx_path_request merged = OPX_PATH_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const SensorOctree &octree = *tree->tree;

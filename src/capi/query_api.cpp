@@ -89,8 +89,7 @@ OPX_API opx_status opx_cost_box_init(opx_cost_box *box, size_t size) {
 OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, opx_cost_box *out_box) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(out_box, "out_box");
-        require_struct_size(out_box->struct_size, "out_box");
+        require_out_struct(out_box, "out_box");
         if (index >= query->cost_boxes.size())
             throw_invalid(format("index %zu is beyond the %zu cost boxes of the last query", index,
                                  query->cost_boxes.size()));
@@ -106,8 +105,7 @@ OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size) {
 OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(out_stats, "out_stats");
-        require_struct_size(out_stats->struct_size, "out_stats");
+        require_out_struct(out_stats, "out_stats");
         opx_query_stats stats = OPX_QUERY_STATS_INIT;
         stats.engine = query->engine;
         if (query->engine == OPX_ENGINE_AMORTIZED) {
@@ -152,8 +150,7 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         require_pointer(query, "query");
         require_pointer(tree, "tree");
         require_pointer(links, "links");
-        require_pointer(out_result, "out_result");
-        require_struct_size(out_result->struct_size, "out_result");
+        require_out_struct(out_result, "out_result");
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const CollisionSettings settings = collision_settings(merged, *tree->tree);
@@ -184,8 +181,7 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
 OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index, opx_contact *out_contact) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(out_contact, "out_contact");
-        require_struct_size(out_contact->struct_size, "out_contact");
+        require_out_struct(out_contact, "out_contact");
         if (index >= query->contacts.size())
             throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index,
                                  query->contacts.size()));
