@@ -1,5 +1,6 @@
 #include "query/direct_distance.hpp"
 
+#include "query/cube_entry.hpp"
 #include "query/narrow_phase.hpp"
 #include "query/shape_distance.hpp"
 #include "query/shape_penetration.hpp"
@@ -27,6 +28,7 @@ double DirectDistance::box_lower_bound(const AabbTreeNode &robot, const Aabb &ce
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     robot_ = links.tree().nodes(), placed_ = links.placed().data();
+    robot_tree_root_ = links.tree().root();
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
     // The boxes hold the leaves at or above the map's threshold: a query
@@ -42,7 +44,7 @@ DistanceOutcome DirectDistance::run(const SensorOctree &tree, const LinkSet &lin
     view_ = &view;
     start(tree, links, settings);
     only_link_ = -1;
-    if (!links.tree().empty()) search(links.tree().root());
+    if (!links.tree().empty()) search_shapes();
     view_ = nullptr;
     return best_;
 }
@@ -60,7 +62,7 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
     for (uint32_t link = 0; link < links.link_count(); ++link) {
         start(tree, links, settings);
         only_link_ = static_cast<int32_t>(link);
-        if (!links.tree().empty()) search(links.tree().root());
+        if (!links.tree().empty()) search_shapes();
         tests += best_.narrow_tests;
         if (best_.found) per_link[link] = best_.distance;
         if (best_.found && (!overall.found || best_.distance < overall.distance)) overall = best_;
@@ -76,6 +78,85 @@ void DirectDistance::search(int32_t robot_node) {
     const bool inner = is_inner(*view_, root);
     const Aabb bounds = bounding_box(root, inner);
     recurse(root, bounds, inner, robot_node, lower_bound(robot_[robot_node], bounds));
+}
+
+// Shape by shape, each entering the octree at the cubes its reach (its box
+// grown by the bound) overlaps, found from their keys (cube_entry.hpp):
+// no robot tree walks the octree's upper levels, where every shape would
+// be bounded against cube after cube only to enter each of them.
+//
+// A shape's reach needs a finite bound, and a loose one costs: the search
+// runs in rounds with a growing radius as the bound, starting at a cell
+// (or at the gap between the robot's box and the map's obstacles).  Pairs
+// nearer than the radius are never pruned, so the first round that finds
+// a pair has found the minimum; the rounds before it cost little, their
+// reach being small.  With unknown space as obstacle, cubes of unknown
+// space have no node to enter by: the robot tree walks the octree instead.
+void DirectDistance::search_shapes() {
+    if (settings_.unknown_occupied) return search(robot_tree_root_);
+    const OctreeView::NodeRef root = view_->root();
+    if (root == nullptr) return;
+    CubeEntryFinder entries(*view_);
+    entries_ = &entries;
+    const Aabb map_bounds = bounding_box(root_cell(*view_), view_->has_children(root));
+    const double robot_gap = std::sqrt(robot_[robot_tree_root_].box.squared_distance(map_bounds));
+    const double largest = 4.0 * kKeyCenter * view_->resolution();  // beyond the map cube's diagonal
+    for (double radius = std::max(view_->resolution(), robot_gap + view_->resolution());; radius *= kRadiusGrowth) {
+        const bool last = !(radius < settings_.cutoff) || radius > largest;
+        bound_ = last ? settings_.cutoff : radius;
+        search_round();
+        if (best_.found || last) break;
+    }
+    entries_ = nullptr;
+}
+
+// Every shape once, in the robot tree's order (neighbours one after the other).
+void DirectDistance::search_round() {
+    int32_t stack[64];
+    int top = 0;
+    stack[top++] = robot_tree_root_;
+    while (top > 0) {
+        const int32_t index = stack[--top];
+        const AabbTreeNode &node = robot_[index];
+        if (!node.is_leaf()) {
+            stack[top++] = node.right, stack[top++] = node.left;
+            continue;
+        }
+        const PlacedShape &shape = placed_[node.item];
+        if (shape.box.empty() || (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_))) continue;
+        if (!settings_.signed_distance && best_.found && bound_ <= 0.0) return;  // in contact: nothing is nearer
+        // Unbounded (the last round without a cutoff) until a first pair is
+        // found, or signed and in contact: from the root.
+        if (std::isfinite(bound_) && bound_ > 0.0) search_shape_from_entries(index);
+        else search(index);
+    }
+}
+
+void DirectDistance::search_shape_from_entries(int32_t leaf) {
+    const AabbTreeNode &robot = robot_[leaf];
+    Aabb reach = robot.box;
+    reach.inflate(bound_);
+    CubeEntries entries;
+    entries_->find(reach, settings_.threshold_log_odds, entries);
+    double lower[8];
+    Aabb bounds[8];
+    bool inner[8];
+    int order[8];
+    int count = 0;
+    for (int k = 0; k < entries.count; ++k) {
+        inner[k] = view_->has_children(entries.cells[k].node);
+        bounds[k] = bounding_box(entries.cells[k], inner[k]);
+        lower[k] = lower_bound(robot, bounds[k]);
+        if (can_prune(lower[k])) continue;
+        if (inner[k]) view_->prefetch_child_array(entries.cells[k].node);  // most are descended
+        int at = count;
+        for (; at > 0 && lower[order[at - 1]] > lower[k]; --at) order[at] = order[at - 1];
+        order[at] = k, ++count;
+    }
+    for (int j = 0; j < count; ++j) {
+        const int k = order[j];
+        recurse(entries.cells[k], bounds[k], inner[k], leaf, lower[k]);
+    }
 }
 
 // Prune when the pair cannot bring the answer below the bound, or not by

@@ -1,9 +1,13 @@
 // The direct engine's distance query: nearest-first branch and bound over
-// the octree x the robot's shape BVH, with lower bounds from box distances
-// in the octree's (map) frame and exact leaf distances.
+// the octree, shape by shape, each shape entering the octree at the cubes
+// its reach overlaps (cube_entry.hpp), with lower bounds from box
+// distances in the octree's (map) frame tightened by the shape's own
+// geometry, and exact leaf distances.  With unknown space as obstacle the
+// robot's shape tree walks the octree from the root instead.
 #pragma once
 
 #include "octree/sensor_octree.hpp"
+#include "query/cube_entry.hpp"
 #include "query/distance_types.hpp"
 #include "query/octree_cell.hpp"
 #include "robot/linkset.hpp"
@@ -23,6 +27,8 @@ public:
 
 private:
     using Cell = OctreeCell;
+    // Each round of search_shapes searches this many times farther.
+    static constexpr double kRadiusGrowth = 4.0;
     // A child of the cell being descended, before its cube is rebuilt for
     // the recursion, with the bounds its lower bound was computed from
     // (bounding_box of the child cell).  No default member initializers,
@@ -38,6 +44,9 @@ private:
 
     void start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
     void search(int32_t robot_node);
+    void search_shapes();
+    void search_round();
+    void search_shape_from_entries(int32_t leaf);
     // `bounds`: where the cell's obstacles can lie (bounding_box(cell)), and
     // `inner`: its node has children; the caller, which bounded the pair
     // with them, computed both once.
@@ -56,6 +65,8 @@ private:
     const LinkSet *links_ = nullptr;
     const AabbTreeNode *robot_ = nullptr;  // the link set's shape tree, read once per query
     const PlacedShape *placed_ = nullptr;
+    int32_t robot_tree_root_ = 0;
+    CubeEntryFinder *entries_ = nullptr;  // during search_shapes
     DistanceSettings settings_;
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance

@@ -1,0 +1,114 @@
+#include "query/cube_entry.hpp"
+
+#include "broadphase/morton.hpp"
+
+#include <algorithm>
+
+namespace octoprox {
+namespace {
+
+constexpr int32_t kMaxKey = 2 * kKeyCenter - 1;
+// A box face this close to a cell face (in cells) may lie on either side of
+// it after rounding: the cell beyond is taken too.
+constexpr double kFaceSlack = 1e-6;
+
+// A coordinate in cells from the map cube's low corner, clamped a little
+// beyond the cube so that truncation is the floor and fits an integer.
+double cells_from_corner(double coordinate, double cells_per_metre) {
+    const double cells = coordinate * cells_per_metre + kKeyCenter;
+    return std::min(std::max(cells, -2.0), 2.0 * kKeyCenter + 2.0);
+}
+
+int32_t floor_cells(double cells) { return static_cast<int32_t>(cells + 2.0) - 2; }
+
+// The deepest depth whose cubes are at least as wide as the range on every
+// axis: the range then meets at most two of them a side.
+int entry_depth(const KeyRange &range) {
+    int32_t extent = 1;
+    for (int axis = 0; axis < 3; ++axis) extent = std::max(extent, range.hi[axis] - range.lo[axis] + 1);
+    int depth = kTreeDepth;
+    while (depth > 0 && (int32_t{1} << (kTreeDepth - depth)) < extent) --depth;
+    return depth;
+}
+
+CellKey cube_key(const int32_t lo[3], int shift, int depth) {
+    CellKey key;
+    const int32_t keep = ~((int32_t{1} << (kTreeDepth - depth)) - 1);
+    for (int axis = 0; axis < 3; ++axis) key.key[axis] = static_cast<uint16_t>((lo[axis] << shift) & keep);
+    key.depth = depth;
+    return key;
+}
+
+}  // namespace
+
+CubeEntryFinder::CubeEntryFinder(const OctreeView &view)
+    : view_(view), cells_per_metre_(1.0 / view.resolution()) {
+    for (Path &path : paths_) path.nodes[0] = view.root();
+}
+
+bool CubeEntryFinder::key_range_of(const Aabb &box, KeyRange &range) const {
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lo = cells_from_corner(box.lo[axis], cells_per_metre_);
+        const double hi = cells_from_corner(box.hi[axis], cells_per_metre_);
+        int32_t first = floor_cells(lo), last = floor_cells(hi);
+        if (lo - first < kFaceSlack) --first;
+        if (last + 1 - hi < kFaceSlack) ++last;
+        range.lo[axis] = std::max(first, 0);
+        range.hi[axis] = std::min(last, kMaxKey);
+        if (range.lo[axis] > range.hi[axis]) return false;
+    }
+    return true;
+}
+
+OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, int &reached) {
+    Path &path = paths_[code >> (3 * (kTreeDepth - 1))];
+    // Levels shared with the cached walk: those above its first differing triple.
+    const uint64_t differ = code ^ path.code;
+    const int first_differing = differ == 0 ? kTreeDepth : kTreeDepth - 1 - (63 - __builtin_clzll(differ)) / 3;
+    int level = std::min({path.depth, first_differing, depth});
+    OctreeView::NodeRef node = path.nodes[level];
+    path.code = code;
+    for (; level < depth; ++level) {
+        if (!view_.has_children(node)) break;
+        node = view_.child(node, static_cast<int>(code >> (3 * (kTreeDepth - 1 - level))) & 7);
+        if (node == nullptr) {
+            path.depth = level;
+            return nullptr;
+        }
+        path.nodes[level + 1] = node;
+    }
+    path.depth = level;
+    reached = level;
+    return node;
+}
+
+void CubeEntryFinder::find(const Aabb &reach, float threshold, CubeEntries &entries) {
+    entries.count = 0;
+    KeyRange range;
+    if (paths_[0].nodes[0] == nullptr || !key_range_of(reach, range)) return;
+    const int depth = entry_depth(range);
+    const int shift = kTreeDepth - depth;
+    int32_t first[3], last[3];
+    for (int axis = 0; axis < 3; ++axis) first[axis] = range.lo[axis] >> shift, last[axis] = range.hi[axis] >> shift;
+    uint64_t spread[3][2];  // each axis's one or two cube keys, spread for the Morton code
+    for (int axis = 0; axis < 3; ++axis)
+        for (int32_t k = first[axis]; k <= last[axis]; ++k)
+            spread[axis][k - first[axis]] = morton_spread(static_cast<uint32_t>(k << shift)) << axis;
+    int32_t cube[3];
+    for (cube[2] = first[2]; cube[2] <= last[2]; ++cube[2])
+        for (cube[1] = first[1]; cube[1] <= last[1]; ++cube[1])
+            for (cube[0] = first[0]; cube[0] <= last[0]; ++cube[0]) {
+                const uint64_t code = spread[0][cube[0] - first[0]] | spread[1][cube[1] - first[1]] |
+                                      spread[2][cube[2] - first[2]];
+                int reached = depth;
+                const OctreeView::NodeRef node = node_of(code, depth, reached);
+                if (node == nullptr || view_.log_odds(node) < threshold) continue;
+                bool seen = false;  // a leaf above `depth` holds more than one of the cubes
+                for (int k = 0; k < entries.count && reached < depth; ++k) seen |= entries.cells[k].node == node;
+                if (seen) continue;
+                const CellKey key = cube_key(cube, shift, reached);
+                entries.cells[entries.count++] = OctreeCell{node, key, cell_box(key, view_.resolution())};
+            }
+}
+
+}  // namespace octoprox
