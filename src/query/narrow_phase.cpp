@@ -57,6 +57,32 @@ double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const V
     return gap;
 }
 
+// A lower bound of the distance between an axis-aligned box and the points
+// within `radius` of the axis segment (half length `half_length` along
+// axes.col(2)), cut flat at the segment's ends (`flat_ends`: a cylinder)
+// or not (a capsule of that radius).  Every point of the box lies at least
+// `across` from the axis line and `along` beyond the end planes, from the
+// box's extents on the shape's axes; the two combine in quadrature, which
+// the face-axis gap of the shape's oriented box does not do (that gap is
+// smaller off the flat faces: at the rim and beside the round side).
+double round_shape_gap(const Vec3 &center, const Eigen::Matrix3d &axes, double radius, double half_length,
+                       bool flat_ends, const Aabb &box) {
+    const Vec3 box_half = box.half_extent();
+    const Vec3 local = axes.transpose() * (box.center() - center);
+    double gap[3];
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 axis = axes.col(k);
+        const double box_reach =
+            std::abs(axis.x()) * box_half.x() + std::abs(axis.y()) * box_half.y() + std::abs(axis.z()) * box_half.z();
+        gap[k] = std::max(std::abs(local[k]) - box_reach, 0.0);
+    }
+    const double across = std::sqrt(gap[0] * gap[0] + gap[1] * gap[1]);
+    const double along = std::max(gap[2] - half_length, 0.0);
+    if (!flat_ends) return std::sqrt(across * across + along * along) - radius;
+    const double side = std::max(across - radius, 0.0);
+    return std::sqrt(side * side + along * along);
+}
+
 // Depth-first over the mesh's triangle tree in the mesh's own frame, so a
 // collision query never places the mesh (most queries touch a mesh in a few
 // nodes): a node's box, posed, is an oriented box, tested against the cell
@@ -92,12 +118,13 @@ double shape_lower_bound(const PlacedShape &shape, const Aabb &box) {
     switch (shape.kind) {
     case ShapeKind::kSphere:
         return std::sqrt(point_box_distance2(core.center, box.center(), box.half_extent())) - shape.inflation;
-    case ShapeKind::kBox:
+    case ShapeKind::kBox: return oriented_box_gap(core.center, core.axes, core.half, box) - shape.inflation;
     case ShapeKind::kCylinder:
-        return oriented_box_gap(core.center, core.axes, core.half, box) - shape.inflation;
+        return round_shape_gap(core.center, core.axes, core.half.x(), core.half.z(), true, box) - shape.inflation;
     case ShapeKind::kCapsule: {
+        // The core is the axis segment; the radius is part of the inflation.
         const double half_length = 0.5 * (core.v[1] - core.v[0]).norm();
-        return oriented_box_gap(core.center, core.axes, Vec3(0.0, 0.0, half_length), box) - shape.inflation;
+        return round_shape_gap(core.center, core.axes, 0.0, half_length, false, box) - shape.inflation;
     }
     case ShapeKind::kMesh: {
         // The root box of the mesh's tree, in the mesh frame: an oriented

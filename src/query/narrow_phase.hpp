@@ -23,11 +23,12 @@ bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const
 bool shape_may_touch(const PlacedShape &shape, const Aabb &box);
 
 // A lower bound of the padded shape's distance to the box (may be
-// negative): the true distance for spheres; for boxes, cylinders and
-// capsules the gap along the 3 face axes of the shape's oriented box, and
-// for meshes along those of the oriented root box of its tree; the box
-// distance otherwise.  Callers take the maximum with the distance of the
-// shape's axis-aligned box, which covers the map's own axes.
+// negative): the true distance for spheres; for boxes the gap along the 3
+// face axes of the box, and for meshes along those of the oriented root
+// box of its tree; for cylinders and capsules the box's gaps across and
+// along their axis, combined in quadrature; the box distance otherwise.
+// Callers take the maximum with the distance of the shape's axis-aligned
+// box, which covers the map's own axes.
 double shape_lower_bound(const PlacedShape &shape, const Aabb &box);
 
 }  // namespace octoprox
