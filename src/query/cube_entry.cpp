@@ -26,9 +26,9 @@ int32_t floor_cells(double cells) { return static_cast<int32_t>(cells + 2.0) - 2
 int entry_depth(const KeyRange &range) {
     int32_t extent = 1;
     for (int axis = 0; axis < 3; ++axis) extent = std::max(extent, range.hi[axis] - range.lo[axis] + 1);
-    int depth = kTreeDepth;
-    while (depth > 0 && (int32_t{1} << (kTreeDepth - depth)) < extent) --depth;
-    return depth;
+    if (extent == 1) return kTreeDepth;
+    const int width_bits = 32 - __builtin_clz(static_cast<uint32_t>(extent - 1));  // 2^width_bits >= extent
+    return std::max(kTreeDepth - width_bits, 0);
 }
 
 CellKey cube_key(const int32_t lo[3], int shift, int depth) {
@@ -60,7 +60,7 @@ bool CubeEntryFinder::key_range_of(const Aabb &box, KeyRange &range) const {
     return true;
 }
 
-OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, int &reached) {
+inline OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, int &reached) {
     Path &path = paths_[code >> (3 * (kTreeDepth - 1))];
     // Levels shared with the cached walk: those above its first differing triple.
     const uint64_t differ = code ^ path.code;
