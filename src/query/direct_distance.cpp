@@ -28,7 +28,6 @@ double DirectDistance::box_lower_bound(const AabbTreeNode &robot, const Aabb &ce
 void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings) {
     links_ = &links, settings_ = settings;
     robot_ = links.tree().nodes(), placed_ = links.placed().data();
-    robot_tree_root_ = links.tree().root();
     best_ = DistanceOutcome();
     bound_ = settings.cutoff;
     // The boxes hold the leaves at or above the map's threshold: a query
@@ -93,28 +92,27 @@ void DirectDistance::search(int32_t robot_node) {
 // reach being small.  With unknown space as obstacle, cubes of unknown
 // space have no node to enter by: the robot tree walks the octree instead.
 void DirectDistance::search_shapes() {
-    if (settings_.unknown_occupied) return search(robot_tree_root_);
+    const int32_t robot_root = links_->tree().root();
+    if (settings_.unknown_occupied) return search(robot_root);
     const OctreeView::NodeRef root = view_->root();
     if (root == nullptr) return;
     CubeEntryFinder entries(*view_);
-    entries_ = &entries;
     const Aabb map_bounds = bounding_box(root_cell(*view_), view_->has_children(root));
-    const double robot_gap = std::sqrt(robot_[robot_tree_root_].box.squared_distance(map_bounds));
+    const double robot_gap = std::sqrt(robot_[robot_root].box.squared_distance(map_bounds));
     const double largest = 4.0 * kKeyCenter * view_->resolution();  // beyond the map cube's diagonal
     for (double radius = std::max(view_->resolution(), robot_gap + view_->resolution());; radius *= kRadiusGrowth) {
         const bool last = !(radius < settings_.cutoff) || radius > largest;
         bound_ = last ? settings_.cutoff : radius;
-        search_round();
+        search_round(entries);
         if (best_.found || last) break;
     }
-    entries_ = nullptr;
 }
 
 // Every shape once, in the robot tree's order (neighbours one after the other).
-void DirectDistance::search_round() {
+void DirectDistance::search_round(CubeEntryFinder &entries) {
     int32_t stack[64];
     int top = 0;
-    stack[top++] = robot_tree_root_;
+    stack[top++] = links_->tree().root();
     while (top > 0) {
         const int32_t index = stack[--top];
         const AabbTreeNode &node = robot_[index];
@@ -127,17 +125,17 @@ void DirectDistance::search_round() {
         if (!settings_.signed_distance && best_.found && bound_ <= 0.0) return;  // in contact: nothing is nearer
         // Unbounded (the last round without a cutoff) until a first pair is
         // found, or signed and in contact: from the root.
-        if (std::isfinite(bound_) && bound_ > 0.0) search_shape_from_entries(index);
+        if (std::isfinite(bound_) && bound_ > 0.0) search_shape_from_entries(entries, index);
         else search(index);
     }
 }
 
-void DirectDistance::search_shape_from_entries(int32_t leaf) {
+void DirectDistance::search_shape_from_entries(CubeEntryFinder &finder, int32_t leaf) {
     const AabbTreeNode &robot = robot_[leaf];
     Aabb reach = robot.box;
     reach.inflate(bound_);
     CubeEntries entries;
-    entries_->find(reach, settings_.threshold_log_odds, entries);
+    finder.find(reach, settings_.threshold_log_odds, entries);
     double lower[8];
     Aabb bounds[8];
     bool inner[8];
@@ -148,7 +146,6 @@ void DirectDistance::search_shape_from_entries(int32_t leaf) {
         bounds[k] = bounding_box(entries.cells[k], inner[k]);
         lower[k] = lower_bound(robot, bounds[k]);
         if (can_prune(lower[k])) continue;
-        if (inner[k]) view_->prefetch_child_array(entries.cells[k].node);  // most are descended
         int at = count;
         for (; at > 0 && lower[order[at - 1]] > lower[k]; --at) order[at] = order[at - 1];
         order[at] = k, ++count;

@@ -45,8 +45,8 @@ private:
     void start(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings);
     void search(int32_t robot_node);
     void search_shapes();
-    void search_round();
-    void search_shape_from_entries(int32_t leaf);
+    void search_round(CubeEntryFinder &entries);
+    void search_shape_from_entries(CubeEntryFinder &entries, int32_t leaf);
     // `bounds`: where the cell's obstacles can lie (bounding_box(cell)), and
     // `inner`: its node has children; the caller, which bounded the pair
     // with them, computed both once.
@@ -65,8 +65,6 @@ private:
     const LinkSet *links_ = nullptr;
     const AabbTreeNode *robot_ = nullptr;  // the link set's shape tree, read once per query
     const PlacedShape *placed_ = nullptr;
-    int32_t robot_tree_root_ = 0;
-    CubeEntryFinder *entries_ = nullptr;  // during search_shapes
     DistanceSettings settings_;
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance
