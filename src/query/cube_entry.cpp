@@ -82,7 +82,17 @@ inline OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, in
     return node;
 }
 
-void CubeEntryFinder::find(const Aabb &reach, float threshold, CubeEntries &entries) {
+// An inner cube whose obstacle cells all lie outside the reach's cells.
+bool CubeEntryFinder::beyond_reach(OctreeView::NodeRef node, const int32_t cube[3], int shift,
+                                   const KeyRange &range) const {
+    if (!view_.has_children(node)) return false;
+    const uint32_t packed = view_.packed_obstacle_bounds(node);
+    if (packed == 0) return false;  // not known: the whole cube
+    const int32_t cube_lo[3] = {cube[0] << shift, cube[1] << shift, cube[2] << shift};
+    return !obstacle_cells_meet(packed, cube_lo, shift, range.lo, range.hi);
+}
+
+void CubeEntryFinder::find(const Aabb &reach, float threshold, bool use_boxes, CubeEntries &entries) {
     entries.count = 0;
     KeyRange range;
     if (paths_[0].nodes[0] == nullptr || !key_range_of(reach, range)) return;
@@ -103,6 +113,7 @@ void CubeEntryFinder::find(const Aabb &reach, float threshold, CubeEntries &entr
                 int reached = depth;
                 const OctreeView::NodeRef node = node_of(code, depth, reached);
                 if (node == nullptr || view_.log_odds(node) < threshold) continue;
+                if (use_boxes && reached == depth && beyond_reach(node, cube, shift, range)) continue;
                 bool seen = false;  // a leaf above `depth` holds more than one of the cubes
                 for (int k = 0; k < entries.count && reached < depth; ++k) seen |= entries.cells[k].node == node;
                 if (seen) continue;

@@ -31,8 +31,11 @@ public:
     // The cubes that hold obstacles at or above `threshold` (an inner
     // node's log-odds is its subtree's maximum) and that the finite box
     // `reach` overlaps.  Unknown space is left out: only for queries where
-    // unknown is free.
-    void find(const Aabb &reach, float threshold, CubeEntries &entries);
+    // unknown is free.  With `use_boxes` (the threshold is at or above the
+    // view's bounds_threshold), an inner cube is left out too when the
+    // cells of its obstacle box (octree_cell.hpp) are all beyond the reach:
+    // an integer test that spares the caller a cube it would prune anyway.
+    void find(const Aabb &reach, float threshold, bool use_boxes, CubeEntries &entries);
 
 private:
     // False when the box lies wholly outside the map cube.
@@ -42,6 +45,7 @@ private:
     // unknown space.  Starts from the deepest node the last walk in the
     // same root octant passed through that lies on this cube's path too.
     OctreeView::NodeRef node_of(uint64_t code, int depth, int &reached);
+    bool beyond_reach(OctreeView::NodeRef node, const int32_t cube[3], int shift, const KeyRange &range) const;
 
     // The last walk down one child of the root.  A map centred on the
     // origin lies across all eight, so a walk from the root would follow

@@ -135,7 +135,7 @@ void DirectDistance::search_shape_from_entries(CubeEntryFinder &finder, int32_t 
     Aabb reach = robot.box;
     reach.inflate(bound_);
     CubeEntries entries;
-    finder.find(reach, settings_.threshold_log_odds, entries);
+    finder.find(reach, settings_.threshold_log_odds, use_obstacle_boxes_, entries);
     double lower[8];
     Aabb bounds[8];
     bool inner[8];

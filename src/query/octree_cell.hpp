@@ -73,6 +73,21 @@ inline Aabb obstacle_box(const Aabb &cube, uint32_t packed, double pad) {
 
 inline Aabb obstacle_box(const OctreeCell &cell, uint32_t packed, double pad) { return obstacle_box(cell.box, packed, pad); }
 
+// Whether the finest cells holding a cube's obstacle leaves, from its
+// packed slots, meet the cells [lo, hi] (per axis): integers only, exact
+// (a slot is a whole number of cells or a whole fraction of one).  The
+// cube's minimum key is cube_lo and it is 2^width_bits cells wide.
+inline bool obstacle_cells_meet(uint32_t packed, const int32_t cube_lo[3], int width_bits, const int32_t lo[3],
+                                const int32_t hi[3]) {
+    for (int axis = 0; axis < 3; ++axis) {
+        const int32_t first_slot = (packed >> (5 * axis)) & 31, last_slot = (packed >> (15 + 5 * axis)) & 31;
+        const int32_t first = cube_lo[axis] + ((first_slot << width_bits) >> 5);
+        const int32_t last = cube_lo[axis] + ((((last_slot + 1) << width_bits) - 1) >> 5);
+        if (last < lo[axis] || first > hi[axis]) return false;
+    }
+    return true;
+}
+
 // Thousands of times the rounding error of any coordinate in the map cube
 // (|x| <= kKeyCenter * resolution), and still far below a micrometre.
 inline double obstacle_box_pad(double resolution) { return 1e-12 * kKeyCenter * resolution; }

@@ -1,7 +1,8 @@
 // The cubes where a shape's search enters the octree (query/cube_entry.hpp):
 // for random boxes on random maps, every obstacle leaf the box touches lies
 // in exactly one of the cubes found, each cube touches the box and holds an
-// obstacle, and there are at most eight.  One finder serves every box of a
+// obstacle, and there are at most eight, with or without the obstacle
+// boxes' integer test.  One finder serves every box of a
 // map, so its cached paths are reused across depths and octants.
 #include "query/cube_entry.hpp"
 #include "unit_scenes.hpp"
@@ -64,12 +65,17 @@ void check_map(const octoprox::SensorOctree &tree, double extent, int boxes, uin
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<float> threshold_draw(-1.0f, 2.0f);
     CubeEntryFinder finder(view);
-    uint64_t touched_obstacles = 0;
+    uint64_t touched_obstacles = 0, left_out_by_boxes = 0;
     for (int b = 0; b < boxes; ++b) {
         const Aabb box = random_box(rng, extent, res);
         const float threshold = threshold_draw(rng);
-        CubeEntries entries;
-        finder.find(box, threshold, entries);
+        // Obstacle boxes hold for thresholds at or above the map's own.
+        const bool use_boxes = threshold >= view.bounds_threshold() && b % 2 == 0;
+        CubeEntries entries, unfiltered;
+        finder.find(box, threshold, use_boxes, entries);
+        finder.find(box, threshold, false, unfiltered);
+        ASSERT_LE(entries.count, unfiltered.count);
+        left_out_by_boxes += unfiltered.count - entries.count;
         ASSERT_LE(entries.count, 8);
         for (int k = 0; k < entries.count; ++k) {
             const octoprox::OctreeCell &cell = entries.cells[k];
@@ -93,6 +99,7 @@ void check_map(const octoprox::SensorOctree &tree, double extent, int boxes, uin
         }
     }
     EXPECT_GT(touched_obstacles, uint64_t(boxes) / 4) << "the boxes should touch obstacles often";
+    EXPECT_GT(left_out_by_boxes, 0u) << "obstacle boxes should leave out some cubes beyond the boxes";
 }
 
 TEST(CubeEntry, RayCastMapsWithPrunedLeavesAndFreeSpace) {
@@ -133,8 +140,8 @@ TEST(CubeEntry, ShallowerAfterDeeperAtTheSameCorner) {
     const OctreeView view = tree.view();
     CubeEntryFinder finder(view);
     CubeEntries small, large;
-    finder.find(Aabb{Vec3(0.01, 0.01, 0.01), Vec3(0.02, 0.02, 0.02)}, 0.0f, small);
-    finder.find(Aabb{Vec3(0.01, 0.01, 0.01), Vec3(1.58, 1.58, 1.58)}, 0.0f, large);
+    finder.find(Aabb{Vec3(0.01, 0.01, 0.01), Vec3(0.02, 0.02, 0.02)}, 0.0f, false, small);
+    finder.find(Aabb{Vec3(0.01, 0.01, 0.01), Vec3(1.58, 1.58, 1.58)}, 0.0f, false, large);
     ASSERT_EQ(small.count, 1);
     EXPECT_EQ(small.cells[0].key.depth, octoprox::kTreeDepth);
     int holders_of_far_cell = 0;
