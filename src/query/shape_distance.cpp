@@ -1,5 +1,6 @@
 #include "query/shape_distance.hpp"
 
+#include "geometry/cylinder_distance.hpp"
 #include "geometry/gjk.hpp"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ bool convex_distance(const Convex &core, double inflation, const Vec3 &center, c
         out.distance = std::max(0.0, d - inflation);
         return true;
     }
-    const GjkResult r = gjk_cell_distance(query);
+    const GjkResult r = core.kind == ConvexKind::kCylinder ? cylinder_cell_distance(query) : gjk_cell_distance(query);
     if (!r.intersecting && r.distance - inflation >= bound) return false;
     const double d = r.intersecting ? 0.0 : r.distance;
     out.on_cell = r.intersecting ? center : r.on_cell;
