@@ -63,11 +63,14 @@ GjkResult cylinder_cell_distance(const GjkQuery &q, CylinderPath *path) {
     const double middle = axis.dot(cylinder.center), half_length = cylinder.half.z();
     GjkResult result;
     CylinderPath taken = CylinderPath::kGjk;
-    if (half_length > 0.0 && beyond_cap(cylinder, q, axis, middle + half_length, result)) taken = CylinderPath::kCap;
-    else if (half_length > 0.0 && beyond_cap(cylinder, q, -axis, -middle + half_length, result))
-        taken = CylinderPath::kCap;
-    else if (half_length > 0.0 && beside_side(cylinder, q, result)) taken = CylinderPath::kSide;
-    else result = gjk_cell_distance(q);
+    if (half_length > 0.0) {  // a flat disk has no side: GJK
+        if (beyond_cap(cylinder, q, axis, middle + half_length, result) ||
+            beyond_cap(cylinder, q, -axis, -middle + half_length, result))
+            taken = CylinderPath::kCap;
+        else if (beside_side(cylinder, q, result))
+            taken = CylinderPath::kSide;
+    }
+    if (taken == CylinderPath::kGjk) result = gjk_cell_distance(q);
     if (path != nullptr) *path = taken;
     return result;
 }
