@@ -39,21 +39,31 @@ bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, con
     return !((local.cwiseAbs() - half - box_reach).array() > kTouchTolerance).any();
 }
 
+// Along each of the three axes (columns of `axes`, unit): how far every
+// point of the box lies from `center` at the least (negative when the box
+// reaches past it), from the box's half extents projected on the axis.
+Vec3 box_gaps_along(const Vec3 &center, const Eigen::Matrix3d &axes, const Aabb &box) {
+    const Vec3 box_half = box.half_extent();
+    const Vec3 local = axes.transpose() * (center - box.center());
+    Vec3 gaps;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 axis = axes.col(k);
+        const double box_reach =
+            std::abs(axis.x()) * box_half.x() + std::abs(axis.y()) * box_half.y() + std::abs(axis.z()) * box_half.z();
+        gaps[k] = std::abs(local[k]) - box_reach;
+    }
+    return gaps;
+}
+
 // The largest gap between an oriented box and an axis-aligned box along
 // the oriented box's own face axes (<= their distance; <= 0 when not
 // separated there).  The map's axes are left out: every caller takes the
 // maximum with the distance of the shape's axis-aligned box, which is at
 // least the gap along any of them.
 double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half, const Aabb &box) {
-    const Vec3 box_half = box.half_extent();
-    const Vec3 local = axes.transpose() * (center - box.center());
+    const Vec3 gaps = box_gaps_along(center, axes, box);
     double gap = -std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) {
-        const Vec3 axis = axes.col(k);
-        const double box_reach =
-            std::abs(axis.x()) * box_half.x() + std::abs(axis.y()) * box_half.y() + std::abs(axis.z()) * box_half.z();
-        gap = std::max(gap, std::abs(local[k]) - half[k] - box_reach);
-    }
+    for (int k = 0; k < 3; ++k) gap = std::max(gap, gaps[k] - half[k]);
     return gap;
 }
 
@@ -67,15 +77,9 @@ double oriented_box_gap(const Vec3 &center, const Eigen::Matrix3d &axes, const V
 // smaller off the flat faces: at the rim and beside the round side).
 double round_shape_gap(const Vec3 &center, const Eigen::Matrix3d &axes, double radius, double half_length,
                        bool flat_ends, const Aabb &box) {
-    const Vec3 box_half = box.half_extent();
-    const Vec3 local = axes.transpose() * (box.center() - center);
+    const Vec3 gaps = box_gaps_along(center, axes, box);
     double gap[3];
-    for (int k = 0; k < 3; ++k) {
-        const Vec3 axis = axes.col(k);
-        const double box_reach =
-            std::abs(axis.x()) * box_half.x() + std::abs(axis.y()) * box_half.y() + std::abs(axis.z()) * box_half.z();
-        gap[k] = std::max(std::abs(local[k]) - box_reach, 0.0);
-    }
+    for (int k = 0; k < 3; ++k) gap[k] = std::max(gaps[k], 0.0);
     const double across = std::sqrt(gap[0] * gap[0] + gap[1] * gap[1]);
     const double along = std::max(gap[2] - half_length, 0.0);
     if (!flat_ends) return std::sqrt(across * across + along * along) - radius;
