@@ -153,7 +153,7 @@ typedef struct opx_octree_stats {
     uint64_t leaves_uncertain;
     uint64_t leaves_free;
     uint64_t inner_nodes;  /* nodes with children, the root included */
-    uint64_t memory_bytes; /* bytes of the tree's nodes and child arrays (OctoMap's memoryUsage) */
+    uint64_t memory_bytes; /* bytes the tree holds: nodes, in blocks of 8 children (free blocks too) */
     /* Tight bounds of the occupied cells' boxes (not the root cube), map
      * frame; zeros when has_occupied is 0. */
     double occupied_min[3];

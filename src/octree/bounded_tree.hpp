@@ -19,6 +19,8 @@
 #include <octomap/OccupancyOcTreeBase.h>
 #include <octomap/OcTreeNode.h>
 
+#include "octree/child_block_pool.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -55,10 +57,39 @@ public:
     // and no map of ours calls it (test unit_obstacle_bounds checks).
     bool has_child_array() const { return children != nullptr; }
     const void *child_array() const { return children; }
+    // For the child-block store (child_blocks.cpp) alone.
+    octomap::AbstractOcTreeNode **&child_pointers() { return children; }
 
 private:
     uint32_t packed_bounds_ = 0;
 };
+
+}  // namespace octoprox
+
+// Each node's children live together in one child block (child_blocks.cpp):
+// OctoMap's array of 8 child pointers, then the 8 child nodes themselves,
+// 64-byte aligned.  OctoMap allocates every child and its pointer array
+// separately, so a traversal that opens a node's children chased pointers
+// to up to 9 scattered places; in a block they fill 3 cache lines.  These
+// are explicit specializations of the OctoMap members that allocate and
+// free nodes, declared here so that every use of the tree sees them.
+namespace octoprox::child_block {
+constexpr size_t kSlotsOffset = 64;  // the nodes follow the 8 pointers
+constexpr size_t kSlotBytes = 16;    // a BoundedNode
+constexpr size_t kBytes = kSlotsOffset + 8 * kSlotBytes;
+}  // namespace octoprox::child_block
+
+namespace octomap {
+using BoundedTreeBase = OcTreeBaseImpl<octoprox::BoundedNode, AbstractOccupancyOcTree>;
+template <> void BoundedTreeBase::allocNodeChildren(octoprox::BoundedNode *node);
+template <> octoprox::BoundedNode *BoundedTreeBase::createNodeChild(octoprox::BoundedNode *node, unsigned int child);
+template <> void BoundedTreeBase::deleteNodeChild(octoprox::BoundedNode *node, unsigned int child);
+template <> bool BoundedTreeBase::pruneNode(octoprox::BoundedNode *node);
+template <> void BoundedTreeBase::deleteNodeRecurs(octoprox::BoundedNode *node);
+template <> size_t BoundedTreeBase::memoryUsage() const;
+}  // namespace octomap
+
+namespace octoprox {
 
 // While one is alive on this thread, inner-node updates compute obstacle
 // boxes for leaves with log-odds >= threshold.  Every change our code makes
@@ -78,9 +109,22 @@ private:
 class BoundedOcTree : public octomap::OccupancyOcTreeBase<BoundedNode> {
 public:
     explicit BoundedOcTree(double resolution) : octomap::OccupancyOcTreeBase<BoundedNode>(resolution) {}
+    // The nodes go back to the pool before the pool goes (OctoMap's own
+    // destructor, which runs later, would clear into a destroyed pool).
+    ~BoundedOcTree() override { clear(); }
+    // OctoMap's copy would allocate the children one by one, outside blocks.
+    BoundedOcTree(const BoundedOcTree &) = delete;
+    BoundedOcTree &operator=(const BoundedOcTree &) = delete;
     // The same type name as OctoMap's OcTree: the files we write are theirs.
     std::string getTreeType() const override { return "OcTree"; }
     BoundedOcTree *create() const override { return new BoundedOcTree(resolution); }
+
+    // The child-block store's memory (child_blocks.cpp).
+    ChildBlockPool &child_blocks() { return child_blocks_; }
+    const ChildBlockPool &child_blocks() const { return child_blocks_; }
+
+private:
+    ChildBlockPool child_blocks_;
 };
 
 }  // namespace octoprox

@@ -51,18 +51,21 @@ public:
     NodeRef root() const;                       // nullptr when the map is empty
     bool has_children(NodeRef node) const;
     NodeRef child(NodeRef node, int index) const;  // nullptr: unknown space
+    // For a node with children: the child, or for unknown space a leaf with
+    // log-odds -infinity, without reading the child pointer.  For searches
+    // to which unknown space is no obstacle, as cells below any threshold.
+    NodeRef child_or_absent(NodeRef node, int index) const;
     float log_odds(NodeRef node) const;
     // For a node with children: its obstacle box packed as in
     // bounded_tree.hpp (0 when not known).  Valid for a query whose
     // obstacles are leaves at or above a threshold >= bounds_threshold().
     uint32_t packed_obstacle_bounds(NodeRef node) const;
     float bounds_threshold() const { return bounds_threshold_; }
-    // Asks the CPU to fetch the children in `mask` (bit i: child i) ahead:
-    // each is its own allocation, so a traversal that reads them one after
-    // the other waits for one cache miss after another.
+    // Asks the CPU to fetch the children in `mask` (bit i: child i) ahead,
+    // so that a traversal reading them does not wait for each in turn.
     void prefetch_children(NodeRef node, unsigned mask) const;
-    // Asks the CPU to fetch the array of an inner node's child pointers
-    // ahead of a descent into it (another allocation of its own).
+    // Asks the CPU to fetch all of an inner node's children (their child
+    // block, bounded_tree.hpp) ahead of a descent into it.
     void prefetch_child_array(NodeRef node) const;
 
 private:

@@ -25,13 +25,26 @@ inline OctreeView::NodeRef OctreeView::child(NodeRef node, int index) const {
     return tree->nodeChildExists(n, index) ? tree->getNodeChild(n, index) : nullptr;
 }
 
-inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
-    for (unsigned bits = mask; bits != 0; bits &= bits - 1)
-        if (NodeRef next = child(node, __builtin_ctz(bits))) __builtin_prefetch(next);
+inline OctreeView::NodeRef OctreeView::child_or_absent(NodeRef node, int index) const {
+    const auto *block = static_cast<const char *>(static_cast<const BoundedNode *>(node)->child_array());
+    return block + child_block::kSlotsOffset + child_block::kSlotBytes * static_cast<size_t>(index);
 }
 
+// The block's lines holding the children in `mask` (slots 0-3 share one
+// line, 4-7 the next): no child pointer is read.
+inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
+    const auto *block = static_cast<const char *>(static_cast<const BoundedNode *>(node)->child_array());
+    if (block == nullptr) return;
+    if (mask & 0x0Fu) __builtin_prefetch(block + child_block::kSlotsOffset);
+    if (mask & 0xF0u) __builtin_prefetch(block + child_block::kSlotsOffset + 64);
+}
+
+// The whole block: the pointers and both lines of nodes.
 inline void OctreeView::prefetch_child_array(NodeRef node) const {
-    __builtin_prefetch(static_cast<const BoundedNode *>(node)->child_array());
+    const auto *block = static_cast<const char *>(static_cast<const BoundedNode *>(node)->child_array());
+    __builtin_prefetch(block);
+    __builtin_prefetch(block + child_block::kSlotsOffset);
+    __builtin_prefetch(block + child_block::kSlotsOffset + 64);
 }
 
 inline float OctreeView::log_odds(NodeRef node) const {

@@ -70,11 +70,8 @@ inline OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, in
     path.code = code;
     for (; level < depth; ++level) {
         if (!view_.has_children(node)) break;
-        node = view_.child(node, static_cast<int>(code >> (3 * (kTreeDepth - 1 - level))) & 7);
-        if (node == nullptr) {
-            path.depth = level;
-            return nullptr;
-        }
+        // Unknown space is a leaf below every threshold here.
+        node = view_.child_or_absent(node, static_cast<int>(code >> (3 * (kTreeDepth - 1 - level))) & 7);
         path.nodes[level + 1] = node;
     }
     path.depth = level;
@@ -112,7 +109,7 @@ void CubeEntryFinder::find(const Aabb &reach, float threshold, bool use_boxes, C
                                       spread[2][cube[2] - first[2]];
                 int reached = depth;
                 const OctreeView::NodeRef node = node_of(code, depth, reached);
-                if (node == nullptr || view_.log_odds(node) < threshold) continue;
+                if (view_.log_odds(node) < threshold) continue;
                 if (use_boxes && reached == depth && beyond_reach(node, cube, shift, range)) continue;
                 bool seen = false;  // a leaf above `depth` holds more than one of the cubes
                 for (int k = 0; k < entries.count && reached < depth; ++k) seen |= entries.cells[k].node == node;

@@ -41,8 +41,9 @@ private:
     // False when the box lies wholly outside the map cube.
     bool key_range_of(const Aabb &box, KeyRange &range) const;
     // The node of the cube at `depth` whose Morton code (interleaved keys)
-    // is `code`, or the leaf above it (its depth in `reached`); nullptr for
-    // unknown space.  Starts from the deepest node the last walk in the
+    // is `code`, or the leaf above it (its depth in `reached`); unknown
+    // space reads as a leaf with log-odds -infinity (OctreeView::
+    // child_or_absent).  Starts from the deepest node the last walk in the
     // same root octant passed through that lies on this cube's path too.
     OctreeView::NodeRef node_of(uint64_t code, int depth, int &reached);
     bool beyond_reach(OctreeView::NodeRef node, const int32_t cube[3], int shift, const KeyRange &range) const;

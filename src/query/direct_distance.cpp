@@ -205,7 +205,10 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
     view_->prefetch_children(cell.node, reached);
     for (unsigned bits = reached; bits != 0; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
-        const OctreeView::NodeRef node = view_->child(cell.node, i);
+        // Where unknown is free, an absent child reads as a leaf below any
+        // threshold: no pointer to read.
+        const OctreeView::NodeRef node =
+            settings_.unknown_occupied ? view_->child(cell.node, i) : view_->child_or_absent(cell.node, i);
         if (node == nullptr ? !settings_.unknown_occupied
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;

@@ -1,0 +1,41 @@
+// Where a map's child blocks (bounded_tree.hpp) come from: slabs of
+// 64-byte aligned blocks, carved in allocation order and reused through a
+// free list.  A heap allocation per block would cost a malloc per node of
+// every insert, and aligning each one leaves unusable gaps around it
+// (glibc: a third more memory on geb079).  Slabs go back to the heap with
+// the map; one map is changed by one thread at a time, so no lock.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace octoprox {
+
+class ChildBlockPool {
+public:
+    static constexpr size_t kBlockBytes = 192;  // child_block::kBytes
+    static constexpr size_t kAlignment = 64;
+
+    ChildBlockPool() = default;
+    ~ChildBlockPool();
+    ChildBlockPool(const ChildBlockPool &) = delete;
+    ChildBlockPool &operator=(const ChildBlockPool &) = delete;
+
+    void *allocate();
+    void release(void *block);  // a block from this pool
+
+    size_t blocks_in_use() const { return in_use_; }
+    size_t bytes_reserved() const { return reserved_; }  // all slabs
+
+private:
+    void add_slab();
+
+    std::vector<void *> slabs_;
+    void *free_ = nullptr;  // released blocks, linked through their first word
+    char *next_ = nullptr;  // the unused rest of the newest slab
+    char *end_ = nullptr;
+    size_t in_use_ = 0;
+    size_t reserved_ = 0;
+};
+
+}  // namespace octoprox

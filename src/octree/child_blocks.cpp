@@ -1,0 +1,127 @@
+// The child-block store of BoundedOcTree (declared in bounded_tree.hpp).
+//
+// A block is OctoMap's child array (8 pointers: every OctoMap algorithm
+// reads children through it, unchanged) followed by the 8 child slots.  A
+// child exists when its pointer is set, and then points to its slot.  A
+// slot without a child holds a placeholder leaf with log-odds -infinity, so
+// that a traversal for which absent (unknown) and below-threshold children
+// are the same may read a slot without its pointer (OctreeView::
+// child_or_absent).  The block is allocated with the node's first child and
+// freed with its last, by pruning or clearing, as OctoMap frees its array,
+// from and to the map's ChildBlockPool; only the root is allocated on its
+// own (OctoMap's `new NODE()`).
+//
+// OccupancyOcTreeBase<BoundedNode> is abstract and BoundedOcTree is its
+// only subclass, so `this` here is always a BoundedOcTree (pool_of).
+#include "octree/bounded_tree.hpp"
+
+#include <cstddef>
+#include <limits>
+#include <new>
+
+namespace octomap {
+namespace {
+
+using octoprox::BoundedNode;
+
+struct ChildBlock {
+    AbstractOcTreeNode *pointers[8];
+    alignas(alignof(BoundedNode)) unsigned char slots[8][sizeof(BoundedNode)];
+};
+static_assert(sizeof(ChildBlock) == octoprox::child_block::kBytes &&
+                  offsetof(ChildBlock, slots) == octoprox::child_block::kSlotsOffset &&
+                  sizeof(BoundedNode) == octoprox::child_block::kSlotBytes,
+              "the layout the view reads by (bounded_tree.hpp)");
+static_assert(sizeof(ChildBlock) == octoprox::ChildBlockPool::kBlockBytes &&
+                  alignof(ChildBlock) <= octoprox::ChildBlockPool::kAlignment,
+              "the pool's blocks fit");
+
+BoundedNode *slot_of(AbstractOcTreeNode **pointers, unsigned int child) {
+    return reinterpret_cast<BoundedNode *>(reinterpret_cast<ChildBlock *>(pointers)->slots[child]);
+}
+
+void place_absent_child(AbstractOcTreeNode **pointers, unsigned int child) {
+    BoundedNode *placeholder = new (slot_of(pointers, child)) BoundedNode();
+    placeholder->setLogOdds(-std::numeric_limits<float>::infinity());
+}
+
+// Destroys the subtree below `node` (not `node`) and returns its blocks.
+void release_children(octoprox::ChildBlockPool &pool, BoundedNode &node) {
+    AbstractOcTreeNode **&children = node.child_pointers();
+    if (children == nullptr) return;
+    for (unsigned int i = 0; i < 8; ++i) {
+        BoundedNode *slot = slot_of(children, i);
+        if (children[i] != nullptr) release_children(pool, *slot);
+        slot->~BoundedNode();
+    }
+    pool.release(children);
+    children = nullptr;
+}
+
+octoprox::ChildBlockPool &pool_of(BoundedTreeBase *tree) {
+    return static_cast<octoprox::BoundedOcTree *>(tree)->child_blocks();
+}
+
+}  // namespace
+
+template <>
+void BoundedTreeBase::allocNodeChildren(BoundedNode *node) {
+    auto *block = new (pool_of(this).allocate()) ChildBlock;
+    for (unsigned int i = 0; i < 8; ++i) {
+        block->pointers[i] = nullptr;
+        place_absent_child(block->pointers, i);
+    }
+    node->children = block->pointers;
+}
+
+template <>
+BoundedNode *BoundedTreeBase::createNodeChild(BoundedNode *node, unsigned int child) {
+    if (node->children == nullptr) allocNodeChildren(node);
+    BoundedNode *slot = slot_of(node->children, child);
+    slot->~BoundedNode();
+    BoundedNode *created = new (slot) BoundedNode();
+    node->children[child] = created;
+    tree_size++;
+    size_changed = true;
+    return created;
+}
+
+// OctoMap deletes only leaves this way; a subtree would leak there, not here.
+template <>
+void BoundedTreeBase::deleteNodeChild(BoundedNode *node, unsigned int child) {
+    BoundedNode *deleted = slot_of(node->children, child);
+    release_children(pool_of(this), *deleted);
+    deleted->~BoundedNode();
+    place_absent_child(node->children, child);
+    node->children[child] = nullptr;
+    tree_size--;
+    size_changed = true;
+}
+
+// OctoMap's pruneNode, with the block freed instead of the array.
+template <>
+bool BoundedTreeBase::pruneNode(BoundedNode *node) {
+    if (!isNodeCollapsible(node)) return false;
+    node->copyData(*getNodeChild(node, 0));
+    for (unsigned int i = 0; i < 8; ++i) deleteNodeChild(node, i);
+    release_children(pool_of(this), *node);  // the block, now empty
+    return true;
+}
+
+// OctoMap calls this with the root alone (clear()), the one node that is
+// not in a block.
+template <>
+void BoundedTreeBase::deleteNodeRecurs(BoundedNode *node) {
+    release_children(pool_of(this), *node);
+    delete node;
+}
+
+// OctoMap's own count assumes a pointer array and separate nodes.  Here:
+// the tree object, the root and the pool's slabs (blocks in use or free).
+template <>
+size_t BoundedTreeBase::memoryUsage() const {
+    const size_t pool = static_cast<const octoprox::BoundedOcTree *>(this)->child_blocks().bytes_reserved();
+    return sizeof(*this) + (root == nullptr ? 0 : sizeof(BoundedNode)) + pool;
+}
+
+}  // namespace octomap
