@@ -29,7 +29,7 @@ void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const
     links_ = &links, settings_ = settings;
     robot_ = links.tree().nodes(), placed_ = links.placed().data();
     best_ = DistanceOutcome();
-    bound_ = settings.cutoff;
+    set_bound(settings.cutoff);
     // The boxes hold the leaves at or above the map's threshold: a query
     // with a higher threshold has fewer obstacles, a lower one more.
     use_obstacle_boxes_ = !settings.unknown_occupied && settings.threshold_log_odds >= view_->bounds_threshold();
@@ -102,7 +102,7 @@ void DirectDistance::search_shapes() {
     const double largest = 4.0 * kKeyCenter * view_->resolution();  // beyond the map cube's diagonal
     for (double radius = std::max(view_->resolution(), robot_gap + view_->resolution());; radius *= kRadiusGrowth) {
         const bool last = !(radius < settings_.cutoff) || radius > largest;
-        bound_ = last ? settings_.cutoff : radius;
+        set_bound(last ? settings_.cutoff : radius);
         search_round(entries);
         if (best_.found || last) break;
     }
@@ -168,15 +168,11 @@ void DirectDistance::search_shape_from_entries(CubeEntryFinder &finder, int32_t 
     }
 }
 
-// Prune when the pair cannot bring the answer below the bound, or not by
-// more than the allowed error.
-bool DirectDistance::can_prune(double lower) const {
-    // Signed, and already in contact: only overlapping pairs can go deeper.
-    if (settings_.signed_distance && bound_ <= 0.0) return lower > 0.0;
-    if (lower >= bound_) return true;
-    if (!best_.found) return false;
-    const double slack = std::max(settings_.abs_err, settings_.rel_err * best_.distance);
-    return bound_ - lower <= slack;
+// The bound, and what can_prune derives from it and from the best pair.
+void DirectDistance::set_bound(double bound) {
+    bound_ = bound;
+    in_contact_ = settings_.signed_distance && bound_ <= 0.0;
+    slack_ = best_.found ? std::max(settings_.abs_err, settings_.rel_err * best_.distance) : 0.0;
 }
 
 bool DirectDistance::is_obstacle(const Cell &cell) const {
@@ -266,7 +262,7 @@ void DirectDistance::test_leaf_pair(const Cell &cell, const AabbTreeNode &robot)
     best_.cell = cell.key;
     best_.cell_unknown = cell.node == nullptr;
     best_.cell_log_odds = cell.node == nullptr ? 0.0f : view_->log_odds(cell.node);
-    bound_ = d.distance;
+    set_bound(d.distance);
 }
 
 }  // namespace octoprox

@@ -53,7 +53,14 @@ private:
     void recurse(const Cell &cell, const Aabb &bounds, bool inner, int32_t robot_node, double lower);
     void descend_octree(const Cell &cell, int32_t robot_node);
     void test_leaf_pair(const Cell &cell, const AabbTreeNode &robot);
-    bool can_prune(double lower) const;
+    // Prune when the pair cannot bring the answer below the bound, or not
+    // by more than the allowed error (slack_).  Inline, and from fields
+    // set_bound keeps: the search asks it of every pair it bounds.
+    bool can_prune(double lower) const {
+        if (in_contact_) return lower > 0.0;  // signed, in contact: only overlapping pairs go deeper
+        return lower >= bound_ || (slack_ > 0.0 && bound_ - lower <= slack_);
+    }
+    void set_bound(double bound);
     bool is_obstacle(const Cell &cell) const;
     double lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
     double box_lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
@@ -68,6 +75,8 @@ private:
     DistanceSettings settings_;
     DistanceOutcome best_;
     double bound_ = 0.0;             // prune at or beyond this distance
+    double slack_ = 0.0;             // abs_err / rel_err allowance, once a pair is found
+    bool in_contact_ = false;        // signed, and the bound is at or below 0
     int32_t only_link_ = -1;         // per-link mode: the link searched
     bool use_obstacle_boxes_ = false;  // the map's inner obstacle boxes hold for this query
     double box_pad_ = 0.0;
