@@ -12,10 +12,11 @@ constexpr int32_t kMaxKey = 2 * kKeyCenter - 1;
 // it after rounding: the cell beyond is taken too.
 constexpr double kFaceSlack = 1e-6;
 
-// A coordinate in cells from the map cube's low corner, clamped a little
-// beyond the cube so that truncation is the floor and fits an integer.
-double cells_from_corner(double coordinate, double cells_per_metre) {
-    const double cells = coordinate * cells_per_metre + kKeyCenter;
+// A coordinate in cells from the map cube's low corner, moved by `slack`
+// cells, clamped a little beyond the cube so that truncation is the floor
+// and fits an integer.
+double cells_from_corner(double coordinate, double cells_per_metre, double slack) {
+    const double cells = coordinate * cells_per_metre + (kKeyCenter + slack);
     return std::min(std::max(cells, -2.0), 2.0 * kKeyCenter + 2.0);
 }
 
@@ -65,11 +66,9 @@ CubeEntryFinder::CubeEntryFinder(const OctreeView &view)
 
 bool CubeEntryFinder::key_range_of(const Aabb &box, KeyRange &range) const {
     for (int axis = 0; axis < 3; ++axis) {
-        const double lo = cells_from_corner(box.lo[axis], cells_per_metre_);
-        const double hi = cells_from_corner(box.hi[axis], cells_per_metre_);
-        int32_t first = floor_cells(lo), last = floor_cells(hi);
-        if (lo - first < kFaceSlack) --first;
-        if (last + 1 - hi < kFaceSlack) ++last;
+        // Faces within kFaceSlack of a cell face take the cell beyond too.
+        const int32_t first = floor_cells(cells_from_corner(box.lo[axis], cells_per_metre_, -kFaceSlack));
+        const int32_t last = floor_cells(cells_from_corner(box.hi[axis], cells_per_metre_, kFaceSlack));
         range.lo[axis] = std::max(first, 0);
         range.hi[axis] = std::min(last, kMaxKey);
         if (range.lo[axis] > range.hi[axis]) return false;
@@ -79,9 +78,11 @@ bool CubeEntryFinder::key_range_of(const Aabb &box, KeyRange &range) const {
 
 inline OctreeView::NodeRef CubeEntryFinder::node_of(uint64_t code, int depth, int &reached) {
     Path &path = paths_[code >> (3 * (kTreeDepth - 1))];
-    // Levels shared with the cached walk: those above its first differing triple.
-    const uint64_t differ = code ^ path.code;
-    const int first_differing = differ == 0 ? kTreeDepth : kTreeDepth - 1 - (63 - __builtin_clzll(differ)) / 3;
+    // Levels shared with the cached walk: those above its first differing
+    // triple.  The | 1 spares a branch for equal codes: their last level
+    // then counts as differing, and is walked again.
+    const uint64_t differ = (code ^ path.code) | 1u;
+    const int first_differing = kTreeDepth - 1 - (63 - __builtin_clzll(differ)) / 3;
     int level = std::min({path.depth, first_differing, depth});
     OctreeView::NodeRef node = path.nodes[level];
     path.code = code;
