@@ -132,6 +132,9 @@ void CubeEntryFinder::find(const Aabb &reach, float threshold, bool use_boxes, C
                 bool seen = false;  // a leaf above `depth` holds more than one of the cubes
                 for (int k = 0; k < entries.count && reached < depth; ++k) seen |= entries.cells[k].node == node;
                 if (seen) continue;
+                // Its children are read next, after every entry is bounded:
+                // time enough for their lines to arrive.
+                if (view_.has_children(node)) view_.prefetch_children(node, 0xFFu);
                 const CellKey key = cube_key(cube, shift, reached);
                 entries.cells[entries.count++] = OctreeCell{node, key, cell_box(key, view_.resolution())};
             }
