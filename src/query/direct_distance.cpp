@@ -146,10 +146,10 @@ void DirectDistance::search_shape_from_entries(CubeEntryFinder &finder, int32_t 
     const AabbTreeNode &robot = robot_[leaf];
     Aabb reach = robot.box;
     reach.inflate(bound_);
-    CubeEntries entries;
+    CubeEntries &entries = entries_;
     finder.find(reach, settings_.threshold_log_odds, use_obstacle_boxes_, entries);
     double lower[8];
-    Aabb bounds[8];
+    Aabb *bounds = entry_bounds_;
     bool inner[8];
     int order[8];
     int count = 0;

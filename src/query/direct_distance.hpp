@@ -79,6 +79,10 @@ private:
     bool in_contact_ = false;        // signed, and the bound is at or below 0
     int32_t only_link_ = -1;         // per-link mode: the link searched
     bool use_obstacle_boxes_ = false;  // the map's inner obstacle boxes hold for this query
+    // Scratch of search_shape_from_entries (never re-entered): as locals,
+    // their cells and boxes were filled with empty boxes for every shape.
+    CubeEntries entries_;
+    Aabb entry_bounds_[8];
     double box_pad_ = 0.0;
 };
 
