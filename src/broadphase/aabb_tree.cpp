@@ -7,10 +7,10 @@ namespace octoprox {
 
 void AabbTree::build(const std::vector<Aabb> &item_boxes) {
     nodes_.clear();
+    leaves_.clear();
     if (item_boxes.empty()) return;
-    nodes_.resize(2 * item_boxes.size() - 1);
-    next_inner_ = 0;
-    next_leaf_ = static_cast<int32_t>(item_boxes.size() - 1);
+    nodes_.reserve(2 * item_boxes.size() - 1);
+    leaves_.reserve(item_boxes.size());
     std::vector<int32_t> items(item_boxes.size());
     std::iota(items.begin(), items.end(), 0);
     build_range(items, 0, items.size(), item_boxes);
@@ -20,8 +20,10 @@ void AabbTree::build(const std::vector<Aabb> &item_boxes) {
 // centres: balanced, O(n log n), good enough for robots and meshes.
 int32_t AabbTree::build_range(std::vector<int32_t> &items, size_t begin, size_t end,
                               const std::vector<Aabb> &item_boxes) {
-    const int32_t index = end - begin == 1 ? next_leaf_++ : next_inner_++;
+    const int32_t index = static_cast<int32_t>(nodes_.size());
+    nodes_.emplace_back();
     if (end - begin == 1) {
+        leaves_.push_back(index);
         nodes_[index].item = items[begin];
         nodes_[index].box = item_boxes[items[begin]];
         return index;

@@ -30,20 +30,21 @@ public:
     const AabbTreeNode &node(int32_t index) const { return nodes_[index]; }
     const AabbTreeNode *nodes() const { return nodes_.data(); }  // in the order below
     size_t size() const { return nodes_.size(); }
-    // The leaves are the nodes [first_leaf(), size()), in tree order.
-    size_t first_leaf() const { return nodes_.empty() ? 0 : nodes_.size() / 2; }
+    // The leaves' indices, in tree order (left to right).
+    const std::vector<int32_t> &leaves() const { return leaves_; }
 
 private:
     int32_t build_range(std::vector<int32_t> &items, size_t begin, size_t end,
                         const std::vector<Aabb> &item_boxes);
 
-    // The n - 1 inner nodes in depth-first pre-order, then the n leaves
-    // left to right.  Parents precede their children, so a reverse sweep
-    // refits bottom-up; and a search that takes the leaves one by one
-    // (the distance query) reads them as one contiguous run, in tree order
-    // (neighbours one after the other), without touching an inner node.
+    // Depth-first pre-order, left subtree before right: parents precede
+    // their children (a reverse sweep refits bottom-up), and a node's left
+    // child is the next node, which keeps a walk from the root to a leaf
+    // on few cache lines.
     std::vector<AabbTreeNode> nodes_;
-    int32_t next_inner_ = 0, next_leaf_ = 0;  // build_range's next indices
+    // For searches that take the leaves one by one (the distance query):
+    // they read no inner node.
+    std::vector<int32_t> leaves_;
 };
 
 }  // namespace octoprox

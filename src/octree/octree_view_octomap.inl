@@ -30,11 +30,13 @@ inline OctreeView::NodeRef OctreeView::child_or_absent(NodeRef node, int index) 
     return block + child_block::kSlotsOffset + child_block::kSlotBytes * static_cast<size_t>(index);
 }
 
-// The block's lines holding the children in `mask` (slots 0-3 share one
-// line, 4-7 the next): no child pointer is read.
+// The block's line of child pointers (child() reads them) and its lines
+// holding the children in `mask` (slots 0-3 share one line, 4-7 the
+// next), without reading any of them.
 inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
     const auto *block = static_cast<const char *>(static_cast<const BoundedNode *>(node)->child_array());
     if (block == nullptr) return;
+    __builtin_prefetch(block);
     if (mask & 0x0Fu) __builtin_prefetch(block + child_block::kSlotsOffset);
     if (mask & 0xF0u) __builtin_prefetch(block + child_block::kSlotsOffset + 64);
 }

@@ -54,6 +54,9 @@ struct LazyPlacement {
     }
 };
 
+// The fields the distance search's lower bounds read (kind, inflation,
+// core) come first: it prefetches a shape's first 160 bytes
+// (direct_distance.cpp); keep them there.
 struct PlacedShape {
     uint32_t link = 0, shape = 0;
     ShapeKind kind = ShapeKind::kSphere;

@@ -29,18 +29,25 @@ bool contains(const Aabb &outer, const Aabb &inner) {
 }
 
 // Items of the tree's leaves, each counted; every node bounds its leaves.
+// Also the layout (aabb_tree.hpp): parents before children, and leaves()
+// lists the leaves left to right, as the distance search takes them.
 std::vector<int> leaf_counts(const AabbTree &tree, size_t items) {
     std::vector<int> seen(items, 0);
+    EXPECT_EQ(tree.leaves().size(), tree.empty() ? 0 : items);
     if (tree.empty()) return seen;
+    size_t next_leaf = 0;
     std::vector<int32_t> stack{tree.root()};
     while (!stack.empty()) {
-        const AabbTreeNode &node = tree.node(stack.back());
+        const int32_t index = stack.back();
+        const AabbTreeNode &node = tree.node(index);
         stack.pop_back();
         if (node.is_leaf()) {
+            EXPECT_EQ(index, tree.leaves().at(next_leaf++)) << "leaves() out of tree order";
             ++seen.at(static_cast<size_t>(node.item));
             continue;
         }
-        for (int32_t child : {node.left, node.right}) {
+        for (int32_t child : {node.right, node.left}) {  // left popped first
+            EXPECT_GT(child, index) << "a child before its parent";
             const Aabb &box = tree.node(child).box;
             if (!box.empty()) {
                 EXPECT_TRUE(contains(node.box, box));
@@ -48,6 +55,7 @@ std::vector<int> leaf_counts(const AabbTree &tree, size_t items) {
             stack.push_back(child);
         }
     }
+    EXPECT_EQ(next_leaf, tree.leaves().size());
     return seen;
 }
 
