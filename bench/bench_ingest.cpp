@@ -91,16 +91,17 @@ void run_resolution(const bench::Frame &frame, double resolution, int reps, std:
 }
 
 void print_table(const std::vector<Row> &rows, int reps) {
-    std::printf("\n%-6s %-10s %-36s %10s %10s %10s %9s %14s\n", "res", "mode", "pipeline", "ms/frame",
-                "occupied", "free", "B/leaf", "octoprox/this");
+    std::printf("\n%-6s %-10s %-36s %10s %10s %10s %9s %11s %14s\n", "res", "mode", "pipeline", "ms/frame",
+                "occupied", "free", "B/leaf", "heap B/leaf", "octoprox/this");
     std::printf("%-6s %-10s %-36s %10s\n", "", "", "", reps > 1 ? "(median)" : "(1 rep)");
     for (const Row &r : rows) {
         char ratio[32] = "-";
         if (r.ratio > 0) std::snprintf(ratio, sizeof ratio, "%.2f", r.ratio);
-        std::printf("%-6s %-10s %-36s %10.1f %10llu %10llu %9.1f %14s\n",
+        std::printf("%-6s %-10s %-36s %10.1f %10llu %10llu %9.1f %11.1f %14s\n",
                     (std::to_string(int(r.resolution * 100 + 0.5)) + "cm").c_str(), r.mode,
                     bench::pipeline_name(r.pipeline), r.result.median_ms(), (unsigned long long)r.result.occupied,
-                    (unsigned long long)r.result.free, r.result.bytes_per_leaf(), ratio);
+                    (unsigned long long)r.result.free, r.result.bytes_per_leaf(), r.result.heap_bytes_per_leaf(),
+                    ratio);
     }
 }
 
@@ -113,11 +114,12 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
         std::fprintf(out,
                      "  {\"resolution\": %g, \"mode\": \"%s\", \"pipeline\": \"%s\", \"median_ms\": %.3f, "
                      "\"reps\": %d, \"occupied\": %llu, \"free\": %llu, \"memory_bytes\": %llu, "
-                     "\"bytes_per_leaf\": %.2f, \"octoprox_over_this\": %s, \"points\": %zu, \"finite_points\": %zu}%s\n",
+                     "\"bytes_per_leaf\": %.2f, \"heap_bytes\": %llu, \"heap_bytes_per_leaf\": %.2f, "
+                     "\"octoprox_over_this\": %s, \"points\": %zu, \"finite_points\": %zu}%s\n",
                      r.resolution, r.mode, bench::pipeline_name(r.pipeline), r.result.median_ms(), reps,
                      (unsigned long long)r.result.occupied, (unsigned long long)r.result.free,
                      (unsigned long long)r.result.memory_bytes, r.result.bytes_per_leaf(),
-                     r.ratio > 0 ? std::to_string(r.ratio).c_str() : "null", frame.count, frame.finite_count,
+                     (unsigned long long)r.result.heap_bytes, r.result.heap_bytes_per_leaf(), r.ratio > 0 ? std::to_string(r.ratio).c_str() : "null", frame.count, frame.finite_count,
                      i + 1 < rows.size() ? "," : "");
     }
     std::fprintf(out, "]\n");

@@ -22,9 +22,11 @@ const char *pipeline_name(Pipeline pipeline);
 struct RunResult {
     std::vector<double> insert_ms;  // one per repetition
     uint64_t occupied = 0, free = 0, leaves = 0;
-    uint64_t memory_bytes = 0;
+    uint64_t memory_bytes = 0;  // the library's own count
+    uint64_t heap_bytes = 0;    // measured: heap held by the map after its insert (glibc's mallinfo2)
     double median_ms() const;
     double bytes_per_leaf() const { return leaves ? double(memory_bytes) / double(leaves) : 0.0; }
+    double heap_bytes_per_leaf() const { return leaves ? double(heap_bytes) / double(leaves) : 0.0; }
 };
 
 // raycast: OPX_INSERT_RAYCAST for kOctoprox, otherwise OPX_INSERT_ENDPOINTS.

@@ -6,9 +6,11 @@
 namespace octoprox {
 namespace {
 
-// Slabs double from 4 KiB (21 blocks: a small map stays small) to 1 MiB.
+// Slabs double from 4 KiB (21 blocks: a small map stays small) to 64 KiB
+// (341 blocks), then stay there: at most one slab's worth, or a third of
+// a small map, is reserved and not yet used.
 constexpr size_t kFirstSlabBytes = 4096;
-constexpr size_t kLargestSlabBytes = size_t{1} << 20;
+constexpr size_t kLargestSlabBytes = size_t{64} << 10;
 
 }  // namespace
 
