@@ -32,20 +32,22 @@ void timed(Work &&work, double &ms, HeapBook &book) {
     book.add(measure_heap([&] { ms = time_once_ms(work); }));
 }
 
-TreeMemory opx_memory(const opx_octree *tree) {
+uint64_t held_bytes(const HeapBook &book) { return book.held > 0 ? static_cast<uint64_t>(book.held) : 0; }
+
+TreeMemory opx_memory(const opx_octree *tree, const HeapBook &book) {
     opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
     check_opx(opx_octree_get_stats(tree, &stats), "opx_octree_get_stats");
     return {stats.leaves_occupied, stats.leaves_occupied + stats.leaves_free + stats.leaves_uncertain,
-            stats.memory_bytes};
+            held_bytes(book)};
 }
 
-TreeMemory octomap_memory(const octomap::OcTree &tree) {
+TreeMemory octomap_memory(const octomap::OcTree &tree, const HeapBook &book) {
     TreeMemory memory;
     for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
         ++memory.known;
         memory.occupied += tree.isNodeOccupied(*it);
     }
-    memory.bytes = tree.memoryUsage();
+    memory.bytes = held_bytes(book);
     return memory;
 }
 
@@ -58,8 +60,8 @@ void OpxMaps::ingest(const bench::Frame &frame, StageTimes &times) {
     timed([&] { insert(endpoints_.get(), frame, OPX_INSERT_ENDPOINTS); }, times[kIngestEndpoints], endpoints_heap);
 }
 
-TreeMemory OpxMaps::raycast_memory() const { return opx_memory(raycast_.get()); }
-TreeMemory OpxMaps::endpoints_memory() const { return opx_memory(endpoints_.get()); }
+TreeMemory OpxMaps::raycast_memory() const { return opx_memory(raycast_.get(), raycast_heap); }
+TreeMemory OpxMaps::endpoints_memory() const { return opx_memory(endpoints_.get(), endpoints_heap); }
 
 OctomapMaps::OctomapMaps(double resolution)
     : raycast_(std::make_shared<octomap::OcTree>(resolution)), endpoints_(resolution) {}
@@ -72,7 +74,7 @@ void OctomapMaps::ingest(const bench::Frame &frame, StageTimes &times) {
           endpoints_heap);
 }
 
-TreeMemory OctomapMaps::raycast_memory() const { return octomap_memory(*raycast_); }
-TreeMemory OctomapMaps::endpoints_memory() const { return octomap_memory(endpoints_); }
+TreeMemory OctomapMaps::raycast_memory() const { return octomap_memory(*raycast_, raycast_heap); }
+TreeMemory OctomapMaps::endpoints_memory() const { return octomap_memory(endpoints_, endpoints_heap); }
 
 }  // namespace frame_bench

@@ -19,7 +19,10 @@ namespace frame_bench {
 // Cells and bytes of one tree.
 struct TreeMemory {
     uint64_t occupied = 0, known = 0;  // known: occupied, free and uncertain leaves
-    uint64_t bytes = 0;                // opx_octree_stats.memory_bytes / OcTree::memoryUsage()
+    // Heap the map holds, measured (the ingests' retained bytes, heap_meter):
+    // the libraries' own counts no longer compare (OctoMap's memoryUsage
+    // is a formula without the allocator's overhead; ours counts blocks).
+    uint64_t bytes = 0;
     double per_occupied() const { return occupied ? double(bytes) / double(occupied) : 0.0; }
     double per_known() const { return known ? double(bytes) / double(known) : 0.0; }
 };

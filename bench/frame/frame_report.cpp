@@ -44,9 +44,9 @@ void print_header(const RunResult &run) {
                                             std::to_string(run.plan.distance_queries))
                                                .c_str()
                                          : "");
-    std::printf("map after the last frame: octoprox %llu occupied / %llu known cells, %.1f B per occupied, %.1f B per "
-                "known cell; OctoMap %llu / %llu, %.1f / %.1f B (endpoints maps: octoprox %.1f, OctoMap %.1f B per "
-                "known cell)\n",
+    std::printf("map after the last frame (heap it holds, measured): octoprox %llu occupied / %llu known cells, %.1f B "
+                "per occupied, %.1f B per known cell; OctoMap %llu / %llu, %.1f / %.1f B (endpoints maps: octoprox "
+                "%.1f, OctoMap %.1f B per known cell)\n",
                 (unsigned long long)run.opx_raycast.occupied, (unsigned long long)run.opx_raycast.known,
                 run.opx_raycast.per_occupied(), run.opx_raycast.per_known(),
                 (unsigned long long)run.octomap_raycast.occupied, (unsigned long long)run.octomap_raycast.known,
