@@ -73,12 +73,6 @@ private:
 // to up to 9 scattered places; in a block they fill 3 cache lines.  These
 // are explicit specializations of the OctoMap members that allocate and
 // free nodes, declared here so that every use of the tree sees them.
-namespace octoprox::child_block {
-constexpr size_t kSlotsOffset = 64;  // the nodes follow the 8 pointers
-constexpr size_t kSlotBytes = 16;    // a BoundedNode
-constexpr size_t kBytes = kSlotsOffset + 8 * kSlotBytes;
-}  // namespace octoprox::child_block
-
 namespace octomap {
 using BoundedTreeBase = OcTreeBaseImpl<octoprox::BoundedNode, AbstractOccupancyOcTree>;
 template <> void BoundedTreeBase::allocNodeChildren(octoprox::BoundedNode *node);

@@ -11,9 +11,16 @@
 
 namespace octoprox {
 
+// A block's layout (child_blocks.cpp, read by OctreeView).
+namespace child_block {
+constexpr size_t kSlotsOffset = 64;  // the nodes follow the 8 pointers
+constexpr size_t kSlotBytes = 16;    // a BoundedNode
+constexpr size_t kBytes = kSlotsOffset + 8 * kSlotBytes;
+}  // namespace child_block
+
 class ChildBlockPool {
 public:
-    static constexpr size_t kBlockBytes = 192;  // child_block::kBytes
+    static constexpr size_t kBlockBytes = child_block::kBytes;
     static constexpr size_t kAlignment = 64;
 
     ChildBlockPool() = default;

@@ -30,11 +30,9 @@ struct ChildBlock {
 };
 static_assert(sizeof(ChildBlock) == octoprox::child_block::kBytes &&
                   offsetof(ChildBlock, slots) == octoprox::child_block::kSlotsOffset &&
-                  sizeof(BoundedNode) == octoprox::child_block::kSlotBytes,
-              "the layout the view reads by (bounded_tree.hpp)");
-static_assert(sizeof(ChildBlock) == octoprox::ChildBlockPool::kBlockBytes &&
+                  sizeof(BoundedNode) == octoprox::child_block::kSlotBytes &&
                   alignof(ChildBlock) <= octoprox::ChildBlockPool::kAlignment,
-              "the pool's blocks fit");
+              "the layout the pool and the view assume (child_block_pool.hpp)");
 
 BoundedNode *slot_of(AbstractOcTreeNode **pointers, unsigned int child) {
     return reinterpret_cast<BoundedNode *>(reinterpret_cast<ChildBlock *>(pointers)->slots[child]);
