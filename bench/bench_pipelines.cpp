@@ -1,10 +1,10 @@
 #include "bench_pipelines.hpp"
 
+#include "heap_meter.hpp"
+
 #include <octoprox/octoprox.h>
 
 #include <octomap/OcTree.h>
-
-#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,16 +22,6 @@ double elapsed_ms(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Heap in use, chunk headers included: small blocks in the arenas plus
-// the blocks glibc maps on their own.  The difference around building a
-// map is what the map holds, the same way for both libraries (their own
-// counts differ: OctoMap's memoryUsage is a formula without malloc's
-// overhead, OctoProx's counts its block pool).
-uint64_t heap_in_use() {
-    const struct mallinfo2 info = mallinfo2();
-    return info.uordblks + info.hblkhd;
-}
-
 void check(opx_status status, const char *what) {
     if (status != OPX_OK) throw std::runtime_error(std::string(what) + ": " + opx_last_error());
 }
@@ -42,7 +32,7 @@ double insert_octoprox(const Frame &frame, double resolution, bool raycast, RunR
     options.resolution = resolution;
     opx_octree *tree = nullptr;
     check(opx_octree_create(&options, &tree), "opx_octree_create");
-    const uint64_t heap_before = heap_in_use();  // the empty map's buffers (OctoMap's key ray) not counted
+    const uint64_t heap_before = heap_live_bytes();  // the empty map's buffers (OctoMap's key ray) not counted
     opx_insert_options insert = OPX_INSERT_OPTIONS_INIT;
     insert.mode = raycast ? OPX_INSERT_RAYCAST : OPX_INSERT_ENDPOINTS;
     std::memcpy(insert.sensor_pose.position, frame.position, sizeof frame.position);
@@ -58,7 +48,7 @@ double insert_octoprox(const Frame &frame, double resolution, bool raycast, RunR
         keep_stats->free = stats.leaves_free;
         keep_stats->leaves = stats.leaves_occupied + stats.leaves_uncertain + stats.leaves_free;
         keep_stats->memory_bytes = stats.memory_bytes;
-        keep_stats->heap_bytes = heap_in_use() - heap_before;
+        keep_stats->heap_bytes = heap_live_bytes() - heap_before;
     }
     opx_octree_destroy(tree);
     return ms;
@@ -74,7 +64,7 @@ void keep_octomap_stats(const octomap::OcTree &tree, RunResult *out) {
 
 double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, RunResult *keep_stats) {
     octomap::OcTree tree(resolution);
-    const uint64_t heap_before = heap_in_use();  // as for OctoProx: the empty tree's key ray not counted
+    const uint64_t heap_before = heap_live_bytes();  // as for OctoProx: the empty tree's key ray not counted
     const Clock::time_point start = Clock::now();
     {
         const octomap::Pointcloud cloud = map_frame_cloud(frame);
@@ -86,7 +76,7 @@ double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, 
     }  // the cloud freed inside the timing, as our insert frees its own copies
     const double ms = elapsed_ms(start);
     if (keep_stats != nullptr) {
-        keep_stats->heap_bytes = heap_in_use() - heap_before;
+        keep_stats->heap_bytes = heap_live_bytes() - heap_before;
         keep_octomap_stats(tree, keep_stats);
     }
     return ms;

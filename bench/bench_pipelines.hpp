@@ -23,7 +23,11 @@ struct RunResult {
     std::vector<double> insert_ms;  // one per repetition
     uint64_t occupied = 0, free = 0, leaves = 0;
     uint64_t memory_bytes = 0;  // the library's own count
-    uint64_t heap_bytes = 0;    // measured: heap held by the map after its insert (glibc's mallinfo2)
+    // Measured (heap_meter.hpp): the heap the map holds after its insert,
+    // the same way for both libraries; their own counts differ (OctoMap's
+    // memoryUsage is a formula without the allocator's overhead, OctoProx's
+    // counts its block pool).
+    uint64_t heap_bytes = 0;
     double median_ms() const;
     double bytes_per_leaf() const { return leaves ? double(memory_bytes) / double(leaves) : 0.0; }
     double heap_bytes_per_leaf() const { return leaves ? double(heap_bytes) / double(leaves) : 0.0; }

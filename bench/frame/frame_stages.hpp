@@ -9,6 +9,9 @@
 
 namespace frame_bench {
 
+using bench::HeapDelta;
+using bench::measure_heap;
+
 // ingest_raycast feeds the map every query runs on; ingest_endpoints is
 // timed on a second map of the same stream (the cheaper mode, reported
 // beside it).  pose_update: moving the robot to each queried

@@ -46,13 +46,13 @@ constexpr size_t kDefault = alignof(std::max_align_t);
 
 }  // namespace
 
-namespace frame_bench {
+namespace bench {
 
 size_t heap_live_bytes() { return live.load(std::memory_order_relaxed); }
 size_t heap_peak_bytes() { return peak.load(std::memory_order_relaxed); }
 void reset_heap_peak() { peak.store(live.load(std::memory_order_relaxed), std::memory_order_relaxed); }
 
-}  // namespace frame_bench
+}  // namespace bench
 
 void *operator new(size_t size) { return allocate_or_throw(size, kDefault); }
 void *operator new[](size_t size) { return allocate_or_throw(size, kDefault); }

@@ -8,7 +8,7 @@
 
 #include <cstddef>
 
-namespace frame_bench {
+namespace bench {
 
 // Bytes allocated by operator new and not yet freed.
 size_t heap_live_bytes();
@@ -35,4 +35,4 @@ HeapDelta measure_heap(Work &&work) {
     return delta;
 }
 
-}  // namespace frame_bench
+}  // namespace bench
