@@ -64,9 +64,6 @@ public:
     // Asks the CPU to fetch the children in `mask` (bit i: child i) ahead,
     // so that a traversal reading them does not wait for each in turn.
     void prefetch_children(NodeRef node, unsigned mask) const;
-    // Asks the CPU to fetch all of an inner node's children (their child
-    // block, bounded_tree.hpp) ahead of a descent into it.
-    void prefetch_child_array(NodeRef node) const;
 
 private:
     const void *tree_;

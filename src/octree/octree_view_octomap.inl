@@ -41,14 +41,6 @@ inline void OctreeView::prefetch_children(NodeRef node, unsigned mask) const {
     if (mask & 0xF0u) __builtin_prefetch(block + child_block::kSlotsOffset + 64);
 }
 
-// The whole block: the pointers and both lines of nodes.
-inline void OctreeView::prefetch_child_array(NodeRef node) const {
-    const auto *block = static_cast<const char *>(static_cast<const BoundedNode *>(node)->child_array());
-    __builtin_prefetch(block);
-    __builtin_prefetch(block + child_block::kSlotsOffset);
-    __builtin_prefetch(block + child_block::kSlotsOffset + 64);
-}
-
 inline float OctreeView::log_odds(NodeRef node) const {
     return static_cast<const BoundedNode *>(node)->getLogOdds();
 }

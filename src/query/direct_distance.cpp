@@ -229,7 +229,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
             obstacle_bounds(*view_, node, child_box(cell.box, i, mid), use_obstacle_boxes_, box_pad_, inner);
         const double lower = lower_bound(robot, bounds);
         if (can_prune(lower)) continue;
-        if (inner) view_->prefetch_child_array(node);  // most survivors are descended
+        if (inner) view_->prefetch_children(node, 0xFFu);  // most survivors are descended
         children[count] = Child{node, lower, i, inner, bounds.lo, bounds.hi};
         // Insertion sort of indices: at most 8 children.
         int at = count;
