@@ -6,17 +6,15 @@
 namespace octoprox::capi {
 namespace {
 // One message per thread, so concurrent queries on other threads never
-// overwrite the message a caller is about to read.
-thread_local std::string last_error_message;
+// overwrite the message a caller is about to read.  A fixed buffer, not a
+// std::string: recording an error must work when the heap is exhausted.
+constexpr std::size_t kMessageCapacity = 2048;
+thread_local char last_error_message[kMessageCapacity];
 }  // namespace
 
-opx_status fail(opx_status status, const char *function, const std::string &message) {
-    try {
-        last_error_message = std::string(function) + ": " + message;
-    } catch (...) {
-        // Out of memory while reporting: keep the previous message rather
-        // than throw across the C boundary.
-    }
+opx_status fail(opx_status status, const char *function, const char *message, const char *detail) noexcept {
+    std::snprintf(last_error_message, kMessageCapacity, "%s: %s%s", function, message,
+                  detail == nullptr ? "" : detail);
     return status;
 }
 
@@ -32,7 +30,7 @@ std::string format(const char *fmt, ...) {
 }  // namespace octoprox::capi
 
 extern "C" OPX_API const char *opx_last_error(void) {
-    return octoprox::capi::last_error_message.c_str();
+    return octoprox::capi::last_error_message;
 }
 
 extern "C" OPX_API const char *opx_status_name(opx_status status) {

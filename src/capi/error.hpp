@@ -32,8 +32,11 @@ private:
 
 namespace capi {
 
-// Records "function: message" as this thread's last error; returns status.
-opx_status fail(opx_status status, const char *function, const std::string &message);
+// Records "function: message" (then detail, when given) as this thread's
+// last error and returns status.  It never allocates and never throws, so
+// an error raised while memory is short is still reported.
+opx_status fail(opx_status status, const char *function, const char *message,
+                const char *detail = nullptr) noexcept;
 
 // printf-like formatting into a std::string, for error messages.
 std::string format(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -49,7 +52,7 @@ opx_status guard(const char *function, Body &&body) noexcept {
     } catch (const std::bad_alloc &) {
         return fail(OPX_ERROR_OUT_OF_MEMORY, function, "out of memory");
     } catch (const std::exception &error) {
-        return fail(OPX_ERROR_INTERNAL, function, std::string("internal error: ") + error.what());
+        return fail(OPX_ERROR_INTERNAL, function, "internal error: ", error.what());
     } catch (...) {
         return fail(OPX_ERROR_INTERNAL, function, "internal error: unknown exception");
     }
