@@ -39,7 +39,7 @@ typedef struct opx_octree opx_octree;
 
 /*
  * Options of a new octree.  Probabilities are in (0, 1).  Requirements:
- * resolution > 0; prob_miss < 0.5 < prob_hit; clamp_min < clamp_max;
+ * 1e-6 <= resolution <= 1e6 (metres); prob_miss < 0.5 < prob_hit; clamp_min < clamp_max;
  * 0 < free_threshold <= occupied_threshold < 1.
  */
 typedef struct opx_octree_options {
@@ -217,7 +217,7 @@ OPX_API opx_status opx_octree_load_memory(const void *data, size_t size,
  * Loads the `data` field of a ROS octomap_msgs/Octomap message: `binary`
  * nonzero for a binary map (.bt body), zero for a full map (.ot body).  The
  * caller checks the message's `id`: only "OcTree" maps are read correctly.
- * resolution is the message's, in metres (> 0).
+ * resolution is the message's, in metres (1e-6 to 1e6).
  */
 OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_t binary,
                                            double resolution, const opx_octree_options *options,

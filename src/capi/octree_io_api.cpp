@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -15,6 +16,11 @@ using namespace octoprox::capi;
 namespace {
 
 std::string read_whole_file(const char *path) {
+    // A directory opens as a stream on Linux and then reads as nothing,
+    // which would be reported as a corrupt map; say what it is.
+    struct stat status;
+    if (::stat(path, &status) == 0 && S_ISDIR(status.st_mode))
+        throw ApiError(OPX_ERROR_IO, format("\"%s\" is a directory, not a map file", path));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ApiError(OPX_ERROR_IO, format("cannot open \"%s\": %s", path, std::strerror(errno)));
     std::ostringstream bytes;
@@ -40,19 +46,30 @@ MapFormat save_format(int32_t format, const char *path) {
     throw_invalid(capi::format("path \"%s\" ends neither in .bt nor in .ot; give the format", path));
 }
 
+// Writes bytes to path; false (with errno set) when any of it is not written.
+bool write_whole_file(const std::string &path, const std::string &bytes) {
+    std::FILE *file = std::fopen(path.c_str(), "wb");
+    if (file == nullptr) return false;
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written) errno = write_errno;
+    return written && closed;
+}
+
 // Writes next to the target and renames, so a failed save never leaves a
-// half-written map where a good one was.
+// half-written map where a good one was, nor the temporary file.
 void write_file_atomically(const char *path, const std::string &bytes) {
     const std::string temporary = std::string(path) + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw ApiError(OPX_ERROR_IO, format("cannot create \"%s\": %s", temporary.c_str(), std::strerror(errno)));
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        if (!out.flush()) throw ApiError(OPX_ERROR_IO, format("cannot write \"%s\"", temporary.c_str()));
+    if (!write_whole_file(temporary, bytes)) {
+        const int error = errno;
+        std::remove(temporary.c_str());
+        throw ApiError(OPX_ERROR_IO, format("cannot write \"%s\": %s", temporary.c_str(), std::strerror(error)));
     }
     if (std::rename(temporary.c_str(), path) != 0) {
+        const int error = errno;
         std::remove(temporary.c_str());
-        throw ApiError(OPX_ERROR_IO, format("cannot rename onto \"%s\": %s", path, std::strerror(errno)));
+        throw ApiError(OPX_ERROR_IO, format("cannot rename onto \"%s\": %s", path, std::strerror(error)));
     }
 }
 
@@ -97,8 +114,9 @@ OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_
     return guard(__func__, [&] {
         require_pointer(out, "out");
         if (size > 0) require_pointer(data, "data");
-        if (!(resolution > 0.0) || !std::isfinite(resolution))
-            throw_invalid(format("resolution is %g; a positive cell edge in metres is needed", resolution));
+        if (!resolution_in_range(resolution))
+            throw_invalid(format("resolution is %g; a cell edge from %g to %g metres is needed", resolution,
+                                 kMinResolution, kMaxResolution));
         const OctreeParams params = read_octree_options(options, "options");
         const std::string body(static_cast<const char *>(data), size);
         const MapFormat format = binary ? MapFormat::kBinary : MapFormat::kFull;

@@ -21,6 +21,7 @@ struct Header {
     MapFormat format = MapFormat::kBinary;
     std::string id;
     double resolution = 0.0;
+    bool has_resolution = false;
     long long size = -1;
     size_t body_offset = 0;
 };
@@ -50,7 +51,7 @@ Header parse_header(const std::string &bytes) {
             // the body is empty, which only an empty tree may have.
             const std::streamoff offset = in.tellg();
             header.body_offset = offset < 0 ? bytes.size() : static_cast<size_t>(offset);
-            if (header.resolution == 0.0) throw_corrupt("header has no \"res\" line");
+            if (!header.has_resolution) throw_corrupt("header has no \"res\" line");
             if (header.format == MapFormat::kFull && header.id.empty())
                 throw_corrupt("header has no \"id\" line");
             return header;
@@ -60,7 +61,10 @@ Header parse_header(const std::string &bytes) {
             fields >> header.size;
             if (!fields.fail() && header.size < 0) throw_corrupt("header gives a negative node count");
         }
-        else if (token == "res") fields >> header.resolution;
+        else if (token == "res") {
+            fields >> header.resolution;
+            header.has_resolution = true;
+        }
         if (fields.fail()) throw_corrupt("malformed header line \"" + line.substr(0, 60) + "\"");
     }
     throw_corrupt("header has no \"data\" line (truncated or not an OctoMap file)");
@@ -125,8 +129,9 @@ private:
 };
 
 void check_resolution(double resolution) {
-    if (!(resolution > 0.0) || !std::isfinite(resolution))
-        throw_corrupt(capi::format("resolution %g is not a positive number", resolution));
+    if (!resolution_in_range(resolution))
+        throw_corrupt(capi::format("resolution %g is outside %g to %g metres", resolution, kMinResolution,
+                                   kMaxResolution));
 }
 
 }  // namespace

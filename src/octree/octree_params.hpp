@@ -15,6 +15,15 @@ struct OctreeParams {
     double free_threshold = 0.5;
 };
 
+// The cell edges a map may have, in metres.  Outside them OctoMap's key
+// arithmetic overflows (a denormal resolution makes 1/resolution infinite)
+// or the map's 2^16 cells per axis mean nothing physical.
+constexpr double kMinResolution = 1e-6;
+constexpr double kMaxResolution = 1e6;
+inline bool resolution_in_range(double resolution) {
+    return resolution >= kMinResolution && resolution <= kMaxResolution;  // false for NaN
+}
+
 // Throws ApiError(INVALID_ARGUMENT) naming the first bad field of `argument`.
 void validate_params(const OctreeParams &params, const char *argument);
 

@@ -18,9 +18,9 @@ void validate_params(const OctreeParams &p, const char *argument) {
             throw_invalid(format("%s.%s is %g; a probability strictly between 0 and 1 is needed",
                                  argument, field, value));
     };
-    if (!(p.resolution > 0.0) || !std::isfinite(p.resolution))
-        throw_invalid(format("%s.resolution is %g; a positive cell edge in metres is needed",
-                             argument, p.resolution));
+    if (!resolution_in_range(p.resolution))
+        throw_invalid(format("%s.resolution is %g; a cell edge from %g to %g metres is needed",
+                             argument, p.resolution, kMinResolution, kMaxResolution));
     check_probability(p.prob_hit, "prob_hit");
     check_probability(p.prob_miss, "prob_miss");
     check_probability(p.clamp_min, "clamp_min");

@@ -113,6 +113,7 @@ static void bad_header_lines_are_corrupt(void **state) {
     static const char *const lines[][2] = {
         {"res ", "res nan"},   {"res ", "res -0.25"},  {"res ", "res 0"},
         {"res ", "res inf"},   {"res ", "res 1e999"},  {"res ", "res abc"},
+        {"res ", "res 5e-324"}, {"res ", "res 1e-7"},  {"res ", "res 2e6"},
         {"res ", "# no res line"},
         {"size ", "size 999"}, /* not the node count */
         {"size ", "size -5"},
@@ -225,6 +226,35 @@ static void bit_flips_load_or_fail_cleanly(void **state) {
     assert_int_equal(failures, 0);
 }
 
+/* A "res 0" line is a bad resolution, not a missing one. */
+static void zero_resolution_is_named_as_such(void **state) {
+    (void)state;
+    byte_buffer b = sample_bytes(OPX_FORMAT_BT);
+    byte_buffer bad = replace_header_line(&b, "res ", "res 0");
+    assert_true(load_gives(bad.data, bad.size, OPX_ERROR_CORRUPT, "res 0"));
+    assert_non_null(strstr(opx_last_error(), "resolution 0"));
+    assert_null(strstr(opx_last_error(), "no \"res\" line"));
+    free(bad.data);
+    free(b.data);
+}
+
+/* A 3-byte payload at a denormal resolution: refused before any key is
+ * computed, as an invalid argument. */
+static void absurd_message_resolutions_are_refused(void **state) {
+    (void)state;
+    const unsigned char payload[3] = {0x01, 0x02, 0x03};
+    const double resolutions[] = {5e-324, 1e-7, 2e6, 0.0, -1.0, NAN, INFINITY};
+    for (size_t i = 0; i < sizeof resolutions / sizeof resolutions[0]; ++i) {
+        for (int32_t binary = 0; binary < 2; ++binary) {
+            opx_octree *out = NOT_NULL_SENTINEL;
+            expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_octree_load_message", "resolution",
+                           opx_octree_load_message(payload, sizeof payload, binary, resolutions[i],
+                                                   NULL, &out));
+            assert_null(out);
+        }
+    }
+}
+
 static void corrupt_message_bodies_are_corrupt(void **state) {
     (void)state;
     for (int f = 0; f < 2; ++f) {
@@ -258,6 +288,8 @@ int main(void) {
         cmocka_unit_test(trees_deeper_than_16_levels_are_corrupt),
         cmocka_unit_test(bit_flips_load_or_fail_cleanly),
         cmocka_unit_test(corrupt_message_bodies_are_corrupt),
+        cmocka_unit_test(zero_resolution_is_named_as_such),
+        cmocka_unit_test(absurd_message_resolutions_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -70,6 +70,25 @@ static void create_rejects_bad_resolution(void **state) {
     BAD_FIELD(resolution, NAN);
     BAD_FIELD(resolution, INFINITY);
     BAD_FIELD(resolution, -INFINITY);
+    BAD_FIELD(resolution, 5e-324); /* denormal: 1/resolution is infinite */
+    BAD_FIELD(resolution, 0.99e-6);
+    BAD_FIELD(resolution, 1.01e6);
+    BAD_FIELD(resolution, 1e300);
+}
+
+static void create_accepts_the_resolution_range_ends(void **state) {
+    (void)state;
+    const double ends[2] = {1e-6, 1e6};
+    for (int i = 0; i < 2; ++i) {
+        opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
+        options.resolution = ends[i];
+        opx_octree *tree = NULL;
+        assert_ok(opx_octree_create(&options, &tree));
+        const double probe[3] = {0.0, 0.0, 0.0};
+        opx_cell_info cell = OPX_CELL_INFO_INIT;
+        assert_ok(opx_octree_classify(tree, probe, &cell));
+        opx_octree_destroy(tree);
+    }
 }
 
 static void create_rejects_non_finite_probabilities(void **state) {
@@ -192,6 +211,7 @@ int main(void) {
         cmocka_unit_test(create_rejects_null_out),
         cmocka_unit_test(create_rejects_struct_size_zero),
         cmocka_unit_test(create_rejects_bad_resolution),
+        cmocka_unit_test(create_accepts_the_resolution_range_ends),
         cmocka_unit_test(create_rejects_non_finite_probabilities),
         cmocka_unit_test(create_rejects_probabilities_outside_0_1),
         cmocka_unit_test(create_rejects_bad_probability_combinations),

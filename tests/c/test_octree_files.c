@@ -3,7 +3,13 @@
  * the memory images, arguments, missing and unwritable paths.  Files are
  * written in the working directory (ctest: the build directory).
  */
+#define _POSIX_C_SOURCE 200809L /* setrlimit, SIGXFSZ, mkdir */
 #include "opx_test.h"
+
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define NOT_NULL_SENTINEL ((opx_octree *)(uintptr_t)0x10)
 #define MISSING_DIR "/nonexistent-octoprox-test-dir"
@@ -168,6 +174,38 @@ static void load_truncated_file_is_corrupt(void **state) {
     opx_octree_destroy(tree);
 }
 
+static void load_directory_is_io_error(void **state) {
+    (void)state;
+    const char *dir = "c_octree_files_dir.bt";
+    mkdir(dir, 0700);
+    expect_load_file_fails(dir, NULL, OPX_ERROR_IO, "directory");
+    rmdir(dir);
+}
+
+/* A save that cannot be written whole (here: past the process's file-size
+ * limit) fails with an I/O error and leaves neither the map nor its
+ * temporary file behind; an earlier good map at the path is kept. */
+static void failed_save_leaves_no_temporary_file(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    const char *path = "c_octree_files_limited.bt";
+    remove(path);
+    struct rlimit saved;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &saved), 0);
+    void (*previous)(int) = signal(SIGXFSZ, SIG_IGN);
+    struct rlimit tiny = saved;
+    tiny.rlim_cur = 16;
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &tiny), 0);
+    const opx_status status = opx_octree_save_file(tree, path, OPX_FORMAT_AUTO);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &saved), 0);
+    signal(SIGXFSZ, previous);
+    assert_status(status, OPX_ERROR_IO);
+    assert_non_null(strstr(opx_last_error(), "opx_octree_save_file"));
+    assert_false(file_exists(path));
+    assert_false(file_exists("c_octree_files_limited.bt.tmp"));
+    opx_octree_destroy(tree);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(save_auto_picks_format_by_extension),
@@ -178,6 +216,8 @@ int main(void) {
         cmocka_unit_test(load_missing_file_is_io_error),
         cmocka_unit_test(load_file_rejects_bad_arguments),
         cmocka_unit_test(load_truncated_file_is_corrupt),
+        cmocka_unit_test(load_directory_is_io_error),
+        cmocka_unit_test(failed_save_leaves_no_temporary_file),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
