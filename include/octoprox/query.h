@@ -29,7 +29,12 @@ typedef struct opx_query opx_query;
  * the same exact tests, so answers equal the direct engine's.  The first
  * query that needs them also builds, once per frame, a tree of the unknown
  * cubes (OPX_UNKNOWN_OCCUPIED, or cost) and one of the uncertain cells
- * (cost); plain collision and distance never pay for them. */
+ * (cost); plain collision and distance never pay for them.  Where several
+ * answers are equally valid (which contacts are kept when more than
+ * max_contacts exist; which cell gives the witness points at distance 0),
+ * the pick follows the tree as earlier queries refined it, so a used
+ * context and a fresh one may return different, equally correct contacts
+ * or witnesses; collided, distances, costs and counts are the same. */
 #define OPX_ENGINE_AMORTIZED 2
 
 typedef struct opx_query_options {
