@@ -1,0 +1,218 @@
+// Sweep cases that make or change maps and link sets.
+#include "fault_answers.hpp"
+#include "fault_scene.hpp"
+#include "sweep_cases.hpp"
+
+#include <cstring>
+#include <string>
+
+namespace fault {
+namespace {
+
+constexpr double kResolution = 0.1;
+constexpr size_t kMapPoints = 300;
+constexpr size_t kFramePoints = 60;
+
+// The small map every case starts from, as a .ot image.
+const std::vector<unsigned char> &base_image() {
+    static const std::vector<unsigned char> image = [] {
+        opx_octree *tree = room_map(kResolution, kMapPoints, 1);
+        std::vector<unsigned char> bytes = map_image(tree, OPX_FORMAT_OT);
+        opx_octree_destroy(tree);
+        return bytes;
+    }();
+    return image;
+}
+
+opx_octree *load_base_map() {
+    const opx_octree_options options = map_options(kResolution);
+    opx_octree *tree = nullptr;
+    require_ok(opx_octree_load_memory(base_image().data(), base_image().size(), &options, &tree),
+               "opx_octree_load_memory");
+    return tree;
+}
+
+// A call that makes a new map: failed, it leaves *out NULL.
+class LoadAttempt : public Attempt {
+public:
+    ~LoadAttempt() override { opx_octree_destroy(tree_); }
+    void record_state(Record &record) override { record.add("out is NULL", static_cast<uint64_t>(tree_ == nullptr)); }
+    void record_answer(Record &record) override { record_map(record, tree_); }
+    bool makes_object() const override { return true; }
+
+protected:
+    opx_octree *tree_ = nullptr;
+};
+
+class LoadImage : public LoadAttempt {
+public:
+    explicit LoadImage(int32_t format) : image_(map_image_of_base(format)) {}
+    opx_status call() override {
+        const opx_octree_options options = map_options(kResolution);
+        return opx_octree_load_memory(image_.data(), image_.size(), &options, &tree_);
+    }
+
+private:
+    static std::vector<unsigned char> map_image_of_base(int32_t format) {
+        opx_octree *tree = load_base_map();
+        std::vector<unsigned char> image = map_image(tree, format);
+        opx_octree_destroy(tree);
+        return image;
+    }
+    std::vector<unsigned char> image_;
+};
+
+// A message's data is the file's body: what follows the line "data".
+class LoadMessage : public LoadAttempt {
+public:
+    explicit LoadMessage(int32_t binary) : binary_(binary) {
+        opx_octree *tree = load_base_map();
+        const std::vector<unsigned char> image = map_image(tree, binary ? OPX_FORMAT_BT : OPX_FORMAT_OT);
+        opx_octree_destroy(tree);
+        const std::string text(image.begin(), image.end());
+        body_ = text.substr(text.find("\ndata\n") + 6);
+    }
+    opx_status call() override {
+        const opx_octree_options options = map_options(kResolution);
+        return opx_octree_load_message(body_.data(), body_.size(), binary_, kResolution, &options, &tree_);
+    }
+
+private:
+    int32_t binary_;
+    std::string body_;
+};
+
+class InsertFrame : public Attempt {
+public:
+    explicit InsertFrame(int32_t mode) : tree_(load_base_map()), mode_(mode), cloud_(room_cloud(kFramePoints, 2)) {}
+    ~InsertFrame() override { opx_octree_destroy(tree_); }
+    opx_status call() override {
+        const opx_insert_options options = sensor_insert_options(mode_);
+        return opx_octree_insert_points(tree_, cloud_.data(), kFramePoints, 0, OPX_SCALAR_FLOAT32, &options,
+                                        &report_);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override {
+        record_map(record, tree_);
+        record.add("points_used", report_.points_used);
+        record.add("cells_hit", report_.cells_hit);
+        record.add("cells_missed", report_.cells_missed);
+    }
+
+private:
+    opx_octree *tree_;
+    int32_t mode_;
+    std::vector<float> cloud_;
+    opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
+};
+
+class SaveImage : public Attempt {
+public:
+    explicit SaveImage(int32_t format) : tree_(load_base_map()), format_(format), buffer_(1 << 20) {}
+    ~SaveImage() override { opx_octree_destroy(tree_); }
+    opx_status call() override { return opx_octree_save_memory(tree_, format_, buffer_.data(), buffer_.size(), &size_); }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override { record.add_bytes("image", buffer_.data(), size_); }
+
+private:
+    opx_octree *tree_;
+    int32_t format_;
+    std::vector<unsigned char> buffer_;
+    size_t size_ = 0;
+};
+
+class LoadUrdf : public Attempt {
+public:
+    ~LoadUrdf() override { opx_linkset_destroy(links_); }
+    opx_status call() override { return opx_linkset_load_urdf_string(kArmUrdf, nullptr, &links_); }
+    void record_state(Record &record) override { record.add("out is NULL", static_cast<uint64_t>(links_ == nullptr)); }
+    void record_answer(Record &record) override { record_linkset(record, links_); }
+    bool makes_object() const override { return true; }
+
+private:
+    opx_linkset *links_ = nullptr;
+};
+
+// Adds the gripper's mesh again, to another link of a posed arm.
+class AddMesh : public Attempt {
+public:
+    AddMesh() : arm_(arm_with_gripper()) {
+        arm_pose(arm_, 3);
+        require_ok(opx_linkset_get_shape(arm_, 6, 2, &mesh_), "opx_linkset_get_shape");
+        vertices_.assign(mesh_.vertices, mesh_.vertices + 3 * mesh_.vertex_count);
+        indices_.assign(mesh_.indices, mesh_.indices + 3 * mesh_.triangle_count);
+        mesh_.vertices = vertices_.data();
+        mesh_.indices = indices_.data();
+    }
+    ~AddMesh() override { opx_linkset_destroy(arm_); }
+    opx_status call() override { return opx_linkset_add_shape(arm_, 2, &mesh_, nullptr); }
+    void record_state(Record &record) override { record_linkset(record, arm_); }
+    void record_answer(Record &record) override { record_linkset(record, arm_); }
+
+private:
+    opx_linkset *arm_;
+    opx_shape mesh_ = OPX_SHAPE_INIT;
+    std::vector<double> vertices_;
+    std::vector<uint32_t> indices_;
+};
+
+class CloneArm : public Attempt {
+public:
+    CloneArm() : arm_(arm_with_gripper()) { arm_pose(arm_, 4); }
+    ~CloneArm() override { opx_linkset_destroy(arm_), opx_linkset_destroy(clone_); }
+    opx_status call() override { return opx_linkset_clone(arm_, &clone_); }
+    void record_state(Record &record) override {
+        record_linkset(record, arm_);
+        record.add("out is NULL", static_cast<uint64_t>(clone_ == nullptr));
+    }
+    void record_answer(Record &record) override { record_linkset(record, clone_); }
+    bool makes_object() const override { return true; }
+
+private:
+    opx_linkset *arm_;
+    opx_linkset *clone_ = nullptr;
+};
+
+template <class T, class... Args>
+SweepCase make_case(const char *name, std::vector<KnownFault> known, Args... args) {
+    return SweepCase{name, [=] { return std::unique_ptr<Attempt>(new T(args...)); }, known};
+}
+
+// Faults the sweep finds in these calls (see KnownFault).
+const KnownFault kHeaderGetline{"status", "OPX_ERROR_CORRUPT",
+                                "a map file's header is read with std::getline, which swallows std::bad_alloc: "
+                                "a failed allocation there reads as a corrupt header"};
+const KnownFault kPartialFrame{"changed", "", "a frame is applied in part when the octree's node pool cannot "
+                                              "grow in the middle of the cell updates"};
+const KnownFault kPartialFrameRetry{"the retry answer", "", "(same) the retry then applies the frame's first "
+                                                            "cells twice"};
+const KnownFault kSaveStream{"status", "OPX_ERROR_INTERNAL", "a map is written through std::ostringstream, which "
+                                                             "swallows std::bad_alloc: reported as an internal "
+                                                             "error"};
+const KnownFault kUrdfCatch{"status", "std::bad_alloc", "parse_model turns every std::exception of urdfdom, "
+                                                        "std::bad_alloc included, into OPX_ERROR_CORRUPT"};
+const KnownFault kUrdfdomNumbers{"status", "urdfdom", "urdfdom reads numbers through a stream that swallows "
+                                                      "std::bad_alloc and then rejects the URDF"};
+const KnownFault kTinyXmlLeak{"leak", "", "TinyXML 2.6 leaks the node it was parsing when an allocation throws"};
+
+}  // namespace
+
+std::vector<SweepCase> map_and_robot_cases() {
+    return {
+        make_case<LoadImage>("opx_octree_load_memory .bt", {kHeaderGetline}, OPX_FORMAT_BT),
+        make_case<LoadImage>("opx_octree_load_memory .ot", {kHeaderGetline}, OPX_FORMAT_OT),
+        make_case<LoadMessage>("opx_octree_load_message binary", {}, 1),
+        make_case<LoadMessage>("opx_octree_load_message full", {}, 0),
+        make_case<InsertFrame>("opx_octree_insert_points ray-cast", {kPartialFrame, kPartialFrameRetry},
+                               OPX_INSERT_RAYCAST),
+        make_case<InsertFrame>("opx_octree_insert_points endpoints", {kPartialFrame, kPartialFrameRetry},
+                               OPX_INSERT_ENDPOINTS),
+        make_case<SaveImage>("opx_octree_save_memory .bt", {kSaveStream}, OPX_FORMAT_BT),
+        make_case<SaveImage>("opx_octree_save_memory .ot", {kSaveStream}, OPX_FORMAT_OT),
+        make_case<LoadUrdf>("opx_linkset_load_urdf_string", {kUrdfCatch, kUrdfdomNumbers, kTinyXmlLeak}),
+        make_case<AddMesh>("opx_linkset_add_shape mesh", {}),
+        make_case<CloneArm>("opx_linkset_clone", {}),
+    };
+}
+
+}  // namespace fault

@@ -1,0 +1,190 @@
+// Sweep cases of the queries: each kind, on both engines, as the first
+// query of a fresh context and as a later one.  Every attempt has its own
+// arm, so a query also meets the link set's lazy work (its tree after
+// shapes were added, the mesh placed when first reached).
+#include "fault_answers.hpp"
+#include "fault_scene.hpp"
+#include "sweep_cases.hpp"
+
+#include <string>
+
+namespace fault {
+namespace {
+
+constexpr size_t kWaypoints = 6;
+constexpr size_t kFirstConfiguration = 2;   // of a used context's earlier query
+constexpr size_t kTestedConfiguration = 5;  // of the query under test
+
+// When the query under test runs.
+enum class Stage {
+    kFresh,    // the first query of a new context
+    kUsed,     // after a query of the same kind at another configuration
+    kRebound,  // after a query on another map: the amortized engine rebinds
+};
+
+const char *stage_name(Stage stage) {
+    switch (stage) {
+    case Stage::kFresh: return "fresh";
+    case Stage::kUsed: return "used";
+    case Stage::kRebound: return "after another map";
+    }
+    return "?";
+}
+
+const opx_octree *other_map() {
+    static const opx_octree *tree = room_map(0.1, 400, 7);
+    return tree;
+}
+
+const opx_octree *shared_map() {
+    static const opx_octree *tree = room_map(0.1, 600, 3);
+    return tree;
+}
+
+const std::vector<double> &shared_boxes() {
+    static const std::vector<double> boxes = room_boxes(40, 4);
+    return boxes;
+}
+
+opx_query *new_query(int32_t engine) {
+    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
+    options.engine = engine;
+    opx_query *query = nullptr;
+    require_ok(opx_query_create(&options, &query), "opx_query_create");
+    return query;
+}
+
+void bind_shared_boxes(opx_query *query) {
+    const std::vector<double> &boxes = shared_boxes();
+    require_ok(opx_query_bind_boxes(query, boxes.data(), boxes.size() / 6, 0), "opx_query_bind_boxes");
+}
+
+// What a failed query must leave alone: the map and the link set.
+class QueryAttemptBase : public Attempt {
+public:
+    explicit QueryAttemptBase(int32_t engine)
+        : arm_(arm_with_gripper()), query_(new_query(engine)), stats_after_failure_(engine == OPX_ENGINE_DIRECT) {}
+    ~QueryAttemptBase() override {
+        opx_query_destroy(query_);
+        opx_linkset_destroy(arm_);
+    }
+    void record_state(Record &record) override {
+        record_map(record, shared_map());
+        record_linkset(record, arm_);
+    }
+    // The context's accessors after a failed call: any status, no crash.
+    void use_after_failure() override {
+        opx_query_stats stats = OPX_QUERY_STATS_INIT;
+        if (stats_after_failure_) opx_query_get_stats(query_, &stats);
+        opx_contact contact = OPX_CONTACT_INIT;
+        opx_query_get_contact(query_, 0, &contact);
+        opx_cost_box box = OPX_COST_BOX_INIT;
+        opx_query_get_cost_box(query_, 0, &box);
+        size_t count = 0;
+        opx_query_get_link_distances(query_, nullptr, 0, &count);
+    }
+
+protected:
+    opx_linkset *arm_;
+    opx_query *query_;
+    // False while opx_query_get_stats after a failed tree build is a known
+    // fault (see kHalfBuiltTree).
+    bool stats_after_failure_;
+};
+
+class QueryAttempt : public QueryAttemptBase {
+public:
+    QueryAttempt(QueryKind kind, int32_t engine, Stage stage) : QueryAttemptBase(engine), kind_(kind) {
+        in_.links = arm_;
+        in_.waypoints = kWaypoints;
+        if (kind == QueryKind::kCollideBoxes || kind == QueryKind::kDistanceBoxes) bind_shared_boxes(query_);
+        if (stage != Stage::kFresh) {
+            in_.tree = stage == Stage::kRebound ? other_map() : shared_map();
+            arm_pose(arm_, kFirstConfiguration);
+            path_ = arm_path(arm_, kFirstConfiguration, kWaypoints);
+            in_.path = path_.data();
+            require_ok(call_query(kind, query_, in_, out_), "an earlier query");
+        }
+        in_.tree = shared_map();
+        arm_pose(arm_, kTestedConfiguration);
+        path_ = arm_path(arm_, kTestedConfiguration, kWaypoints);
+        in_.path = path_.data();
+    }
+    opx_status call() override { return call_query(kind_, query_, in_, out_); }
+    void record_answer(Record &record) override { record_query(kind_, record, query_, out_); }
+
+private:
+    QueryKind kind_;
+    QueryInputs in_;
+    QueryOutputs out_;
+    std::vector<opx_pose> path_;
+};
+
+// Binding the caller's boxes; a used context had other boxes bound and
+// queried.  Failed, the context keeps what it had bound.
+class BindAttempt : public QueryAttemptBase {
+public:
+    explicit BindAttempt(bool used) : QueryAttemptBase(OPX_ENGINE_AMORTIZED), boxes_(room_boxes(30, 5)) {
+        arm_pose(arm_, kTestedConfiguration);
+        if (!used) return;
+        bind_shared_boxes(query_);
+        QueryInputs in;
+        in.links = arm_;
+        QueryOutputs out;
+        require_ok(call_query(QueryKind::kDistanceBoxes, query_, in, out), "an earlier query");
+    }
+    opx_status call() override { return opx_query_bind_boxes(query_, boxes_.data(), boxes_.size() / 6, 0); }
+    void record_state(Record &record) override {
+        QueryAttemptBase::record_state(record);
+        if (stats_after_failure_) record_query_stats(record, query_);
+    }
+    void record_answer(Record &record) override {
+        record_query_stats(record, query_);
+        QueryInputs in;
+        in.links = arm_;
+        QueryOutputs out;
+        record.add("distance_boxes status", call_query(QueryKind::kDistanceBoxes, query_, in, out));
+        record_query(QueryKind::kDistanceBoxes, record, query_, out);
+    }
+
+private:
+    std::vector<double> boxes_;
+};
+
+std::string case_name(const std::string &what, int32_t engine, Stage stage) {
+    return what + (engine == OPX_ENGINE_DIRECT ? " direct " : " amortized ") + stage_name(stage);
+}
+
+// A tree of the amortized engine whose build failed keeps its node array
+// but not its nodes; opx_query_get_stats then reads it as leaves of box -1
+// (a write before a heap block).  The sweep does not call it after a
+// failure on that engine until this is mended.
+const KnownFault kHalfBuiltTree{"stats", "", "opx_query_get_stats is not called after a failed amortized query or "
+                                             "bind: it reads the half-built box tree out of bounds"};
+
+SweepCase query_case(QueryKind kind, int32_t engine, Stage stage) {
+    std::vector<KnownFault> known;
+    if (engine == OPX_ENGINE_AMORTIZED) known.push_back(kHalfBuiltTree);
+    return {case_name(std::string("opx_query_") + query_kind_name(kind), engine, stage),
+            [=] { return std::unique_ptr<Attempt>(new QueryAttempt(kind, engine, stage)); }, known};
+}
+
+}  // namespace
+
+std::vector<SweepCase> query_cases() {
+    std::vector<SweepCase> cases;
+    for (int32_t engine : {OPX_ENGINE_DIRECT, OPX_ENGINE_AMORTIZED})
+        for (Stage stage : {Stage::kFresh, Stage::kUsed, Stage::kRebound})
+            for (QueryKind kind : {QueryKind::kCollide, QueryKind::kDistance, QueryKind::kPath})
+                cases.push_back(query_case(kind, engine, stage));
+    for (Stage stage : {Stage::kFresh, Stage::kUsed}) {
+        const bool used = stage == Stage::kUsed;
+        cases.push_back({case_name("opx_query_bind_boxes", OPX_ENGINE_AMORTIZED, stage),
+                         [=] { return std::unique_ptr<Attempt>(new BindAttempt(used)); }, {kHalfBuiltTree}});
+        for (QueryKind kind : {QueryKind::kCollideBoxes, QueryKind::kDistanceBoxes})
+            cases.push_back(query_case(kind, OPX_ENGINE_AMORTIZED, stage));
+    }
+    return cases;
+}
+
+}  // namespace fault
