@@ -1,0 +1,232 @@
+// fault_threads: one map and a set of posed link sets shared read-only by
+// N threads (2, 4, 8), each with its own query contexts, each running every
+// query kind that takes const handles on both engines over many poses, and
+// every read of the map and the link sets.  Every thread must answer bit
+// for bit what one thread alone answers.  The link sets are made anew for
+// each run and never queried before it, so their lazy work (the tree over
+// shapes added by hand, a mesh placed when first reached) happens while the
+// threads race for it.  Built with -fsanitize=thread it is tsan_threads.
+//
+// Usage: fault_threads [--poses N] [--without-unplaced-links] [thread counts...]
+//   --poses N: N posed arms (default 48)
+//   --without-unplaced-links: leave out the link set whose tree the first
+//     query builds (see run_tsan_threads.cmake)
+//   thread counts: default 2 4 8
+#include "fault_answers.hpp"
+#include "fault_scene.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace fault;
+
+constexpr size_t kWaypoints = 5;  // per path query
+constexpr size_t kProbes = 200;   // classify calls
+
+struct Settings {
+    size_t poses = 48;  // posed arms shared by the threads
+    bool unplaced_links = true;
+    std::vector<size_t> thread_counts;
+};
+
+// What every thread reads: built before the threads start.
+struct SharedScene {
+    const opx_octree *tree = nullptr;
+    std::vector<opx_linkset *> arms;  // arm i at configuration i
+    opx_linkset *loose = nullptr;     // shapes added by hand, never posed (may be NULL)
+    std::vector<std::vector<opx_pose>> paths;
+    std::vector<double> boxes;
+
+    ~SharedScene() {
+        for (opx_linkset *arm : arms) opx_linkset_destroy(arm);
+        opx_linkset_destroy(loose);
+    }
+};
+
+// Links of every shape kind at the origin of the map, where the floor is:
+// the link set's tree is left to the first query to build.
+opx_linkset *loose_links() {
+    opx_linkset *links = nullptr;
+    require_ok(opx_linkset_create(&links), "opx_linkset_create");
+    const opx_linkset *arm = arm_with_gripper();
+    uint32_t count = 0;
+    require_ok(opx_linkset_link_count(arm, &count), "opx_linkset_link_count");
+    for (uint32_t link = 0; link < count; ++link) {
+        uint32_t added = 0, shapes = 0;
+        require_ok(opx_linkset_add_link(links, "copy", &added), "opx_linkset_add_link");
+        require_ok(opx_linkset_shape_count(arm, link, &shapes), "opx_linkset_shape_count");
+        for (uint32_t s = 0; s < shapes; ++s) {
+            opx_shape shape = OPX_SHAPE_INIT;
+            require_ok(opx_linkset_get_shape(arm, link, s, &shape), "opx_linkset_get_shape");
+            shape.pose.position[0] += 0.5 + 0.1 * link;  // spread over the floor and the box
+            shape.pose.position[2] += 0.02 * link;
+            require_ok(opx_linkset_add_shape(links, added, &shape, nullptr), "opx_linkset_add_shape");
+        }
+    }
+    opx_linkset_destroy(const_cast<opx_linkset *>(arm));
+    return links;
+}
+
+std::unique_ptr<SharedScene> make_scene(const opx_octree *tree, const Settings &settings) {
+    auto scene = std::make_unique<SharedScene>();
+    scene->tree = tree;
+    for (size_t i = 0; i < settings.poses; ++i) {
+        scene->arms.push_back(arm_with_gripper());
+        arm_pose(scene->arms.back(), i);
+    }
+    if (settings.unplaced_links) scene->loose = loose_links();
+    for (size_t i = 0; i < settings.poses; ++i) scene->paths.push_back(arm_path(scene->arms[0], 3 * i, kWaypoints));
+    scene->boxes = room_boxes(300, 21);
+    return scene;
+}
+
+opx_query *new_query(int32_t engine) {
+    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
+    options.engine = engine;
+    opx_query *query = nullptr;
+    require_ok(opx_query_create(&options, &query), "opx_query_create");
+    return query;
+}
+
+void run_query(Record &record, QueryKind kind, opx_query *query, const QueryInputs &in) {
+    QueryOutputs out;
+    const opx_status status = call_query(kind, query, in, out);
+    record.add(query_kind_name(kind), status);
+    if (status == OPX_OK) record_query(kind, record, query, out);
+}
+
+// Octree queries: every link set, both unknown policies, on one context.
+void octree_queries(Record &record, const SharedScene &scene, int32_t engine) {
+    opx_query *query = new_query(engine);
+    for (size_t i = 0; i <= scene.arms.size(); ++i) {
+        QueryInputs in;
+        in.tree = scene.tree;
+        in.links = i < scene.arms.size() ? scene.arms[i] : scene.loose;
+        if (in.links == nullptr) break;
+        in.unknown_policy = i % 3 == 2 ? OPX_UNKNOWN_OCCUPIED : OPX_UNKNOWN_FREE;
+        run_query(record, QueryKind::kCollide, query, in);
+        run_query(record, QueryKind::kDistance, query, in);
+        if (i < scene.paths.size()) {
+            in.links = scene.arms[0];
+            in.path = scene.paths[i].data();
+            in.waypoints = kWaypoints;
+            run_query(record, QueryKind::kPath, query, in);
+        }
+    }
+    record_query_stats(record, query);
+    opx_query_destroy(query);
+}
+
+void box_queries(Record &record, const SharedScene &scene) {
+    opx_query *query = new_query(OPX_ENGINE_AMORTIZED);
+    record.add("bind_boxes", opx_query_bind_boxes(query, scene.boxes.data(), scene.boxes.size() / 6, 0));
+    for (const opx_linkset *arm : scene.arms) {
+        QueryInputs in;
+        in.links = arm;
+        run_query(record, QueryKind::kCollideBoxes, query, in);
+        run_query(record, QueryKind::kDistanceBoxes, query, in);
+    }
+    record_query_stats(record, query);
+    opx_query_destroy(query);
+}
+
+// A clone of a shared link set (opx_linkset_clone takes a const handle),
+// queried at once.
+void clone_queries(Record &record, const SharedScene &scene) {
+    opx_query *query = new_query(OPX_ENGINE_DIRECT);
+    for (const opx_linkset *arm : {scene.arms[1], scene.loose}) {
+        if (arm == nullptr) continue;
+        opx_linkset *clone = nullptr;
+        record.add("clone", opx_linkset_clone(arm, &clone));
+        QueryInputs in;
+        in.tree = scene.tree;
+        in.links = clone;
+        run_query(record, QueryKind::kDistance, query, in);
+        record_linkset(record, clone);
+        opx_linkset_destroy(clone);
+    }
+    opx_query_destroy(query);
+}
+
+Record every_answer(const SharedScene &scene) {
+    Record record;
+    octree_queries(record, scene, OPX_ENGINE_DIRECT);
+    octree_queries(record, scene, OPX_ENGINE_AMORTIZED);
+    box_queries(record, scene);
+    clone_queries(record, scene);
+    record_map_reads(record, scene.tree, kProbes);
+    for (const opx_linkset *arm : scene.arms) record_linkset(record, arm);
+    if (scene.loose != nullptr) record_linkset(record, scene.loose);
+    return record;
+}
+
+// Runs every_answer on `threads` threads at once over a fresh scene; the
+// number of threads whose answers differ from `reference`.
+int run_threads(const opx_octree *tree, const Settings &settings, size_t threads, const Record &reference) {
+    const std::unique_ptr<SharedScene> scene = make_scene(tree, settings);
+    std::vector<Record> records(threads);
+    std::atomic<size_t> ready{0};
+    std::vector<std::thread> workers;
+    for (size_t t = 0; t < threads; ++t) {
+        workers.emplace_back([&, t] {
+            ready.fetch_add(1);
+            while (ready.load() < threads) std::this_thread::yield();  // start together
+            records[t] = every_answer(*scene);
+        });
+    }
+    for (std::thread &worker : workers) worker.join();
+    int differing = 0;
+    for (size_t t = 0; t < threads; ++t) {
+        if (records[t] == reference) continue;
+        ++differing;
+        std::printf("FAIL %zu threads: thread %zu answers otherwise than one thread alone: %s\n", threads, t,
+                    records[t].first_difference(reference).c_str());
+    }
+    return differing;
+}
+
+Settings read_settings(int argc, char **argv) {
+    Settings settings;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--poses" && i + 1 < argc) settings.poses = std::strtoul(argv[++i], nullptr, 10);
+        else if (arg == "--without-unplaced-links") settings.unplaced_links = false;
+        else settings.thread_counts.push_back(std::strtoul(argv[i], nullptr, 10));
+    }
+    if (settings.poses < 2) settings.poses = 2;  // clone_queries uses arm 1
+    if (settings.thread_counts.empty()) settings.thread_counts = {2, 4, 8};
+    return settings;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    setvbuf(stdout, nullptr, _IOLBF, 0);
+    const Settings settings = read_settings(argc, argv);
+    opx_octree *tree = room_map(0.05, 3000, 11);
+    const auto start = std::chrono::steady_clock::now();
+    const Record reference = every_answer(*make_scene(tree, settings));
+    const double alone = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("one thread: %zu poses, %zu words of answers in %.2f s%s\n", settings.poses, reference.size(), alone,
+                settings.unplaced_links ? "" : " (without the unplaced link set)");
+
+    int passed = 0, failed = 0;
+    for (size_t threads : settings.thread_counts) {
+        const auto run_start = std::chrono::steady_clock::now();
+        const int differing = run_threads(tree, settings, threads, reference);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+        std::printf("%zu threads: %d of them differ, %.2f s\n", threads, differing, seconds);
+        (differing == 0 ? passed : failed) += 1;
+    }
+    opx_octree_destroy(tree);
+    std::printf("fault_threads: %d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
