@@ -13,6 +13,9 @@
 #define PLY_MAX_ELEMENTS 16
 #define PLY_MAX_PROPERTIES 64
 #define PLY_LINE_MAX 1024
+#define PLY_WORD_MAX 64
+/* Items of one list at most (a face of a million corners is no face). */
+#define PLY_MAX_LIST_ITEMS 1e6
 
 typedef struct ply_property {
     char name[64];
@@ -25,7 +28,7 @@ typedef struct ply_property {
 
 typedef struct ply_element {
     char name[64];
-    long long count;
+    uint64_t count;  /* rows, at most CLOUD_MAX_POINTS */
     int property_count;
     ply_property properties[PLY_MAX_PROPERTIES];
 } ply_element;
@@ -100,7 +103,6 @@ static int split_words(char *line, char *words[], int max_words) {
 
 static int parse_element(ply_header *h, char *words[], int n, char *error, size_t error_size) {
     ply_element *e;
-    char *end = NULL;
     if (n != 3 || h->element_count == PLY_MAX_ELEMENTS) {
         cloud_set_error(error, error_size, "malformed element line (or more than %d elements)", PLY_MAX_ELEMENTS);
         return -1;
@@ -108,8 +110,7 @@ static int parse_element(ply_header *h, char *words[], int n, char *error, size_
     e = &h->elements[h->element_count++];
     memset(e, 0, sizeof *e);
     snprintf(e->name, sizeof e->name, "%s", words[1]);
-    e->count = strtoll(words[2], &end, 10);
-    if (*end != '\0' || e->count < 0 || (unsigned long long)e->count > SIZE_MAX / (3 * sizeof(float))) {
+    if (cloud_parse_count(words[2], CLOUD_MAX_POINTS, &e->count) != 0) {
         cloud_set_error(error, error_size, "element \"%s\" has a bad count \"%s\"", e->name, words[2]);
         return -1;
     }
@@ -154,13 +155,18 @@ static int read_header(FILE *file, ply_header *h, char *error, size_t error_size
     char line[PLY_LINE_MAX];
     int status = 0;
     memset(h, 0, sizeof *h);
-    if (fgets(line, sizeof line, file) == NULL || strncmp(line, "ply", 3) != 0 ||
+    if (cloud_read_line(file, line, sizeof line) != 0 || strncmp(line, "ply", 3) != 0 ||
         (line[3] != '\n' && line[3] != '\r')) {
         cloud_set_error(error, error_size, "not a PLY file (the first line is not \"ply\")");
         return -1;
     }
     while (status == 0) {
-        if (fgets(line, sizeof line, file) == NULL) {
+        const int got = cloud_read_line(file, line, sizeof line);
+        if (got == -2) {
+            cloud_set_error(error, error_size, "a header line is longer than %d bytes", PLY_LINE_MAX - 2);
+            return -1;
+        }
+        if (got != 0) {
             cloud_set_error(error, error_size, "the header ends before end_header");
             return -1;
         }
@@ -187,8 +193,9 @@ static int read_value(FILE *file, int binary, int size, char kind, double *out) 
         return 0;
     }
     {
-        char word[64], *end = NULL;
-        if (fscanf(file, "%63s", word) != 1) return -1;
+        char word[PLY_WORD_MAX], *end = NULL;
+        const int status = cloud_read_word(file, word, sizeof word);
+        if (status != 0) return status == -1 ? -1 : -2;
         *out = strtod(word, &end);
         return end == word || *end != '\0' ? -2 : 0;
     }
@@ -197,30 +204,67 @@ static int read_value(FILE *file, int binary, int size, char kind, double *out) 
 /* Reads one property of one row; *out gets a scalar's value. */
 static int read_property(FILE *file, int binary, const ply_property *p, double *out) {
     double count, item;
-    long long i;
+    long i;
     int status;
     if (!p->is_list) return read_value(file, binary, p->type_size, p->type_kind, out);
     status = read_value(file, binary, p->count_size, p->count_kind, &count);
     if (status != 0) return status;
-    if (count < 0 || count > 1e6 || count != floor(count)) return -2;
-    for (i = 0; i < (long long)count; ++i)
+    if (count < 0 || count > PLY_MAX_LIST_ITEMS || count != floor(count)) return -2;
+    for (i = 0; i < (long)count; ++i)
         if ((status = read_value(file, binary, p->type_size, p->type_kind, &item)) != 0) return status;
     *out = count;
     return 0;
 }
 
-static int row_error(int status, const ply_element *e, long long row, char *error, size_t error_size) {
+static int row_error(int status, const ply_element *e, uint64_t row, char *error, size_t error_size) {
     if (status == -1)
-        cloud_set_error(error, error_size, "data truncated in element \"%s\" at row %lld of %lld", e->name, row, e->count);
+        cloud_set_error(error, error_size, "data truncated in element \"%s\" at row %llu of %llu", e->name,
+                        (unsigned long long)row, (unsigned long long)e->count);
     else
-        cloud_set_error(error, error_size, "element \"%s\" row %lld holds a value that is not a number", e->name, row);
+        cloud_set_error(error, error_size, "element \"%s\" row %llu holds a value that is not a number", e->name,
+                        (unsigned long long)row);
     return -1;
 }
 
+/* The fewest bytes one row of e takes: binary, its scalars and its lists'
+ * item counts (a list may be empty); ascii, one character and one blank
+ * per property.  0 for an element without properties. */
+static uint64_t min_row_bytes(const ply_element *e, int binary) {
+    uint64_t bytes = 0;
+    int k;
+    for (k = 0; k < e->property_count; ++k) {
+        const ply_property *p = &e->properties[k];
+        bytes += !binary ? 2 : (uint64_t)(p->is_list ? p->count_size : p->type_size);
+    }
+    return bytes;
+}
+
+/* Refuses an element that announces more rows than the rest of the file
+ * can hold (when the file has a known size), before any row is read. */
+static int check_room(FILE *file, int binary, const ply_element *e, int *size_known, char *error,
+                      size_t error_size) {
+    const uint64_t row_bytes = min_row_bytes(e, binary);
+    uint64_t left, most;
+    *size_known = cloud_bytes_left(file, &left) == 0;
+    if (!*size_known || row_bytes == 0) return 0;
+    /* In ascii the very last blank may be missing. */
+    most = (binary ? left : left + 1) / row_bytes;
+    if (e->count > most) {
+        cloud_set_error(error, error_size, "data truncated: element \"%s\" announces %llu rows, the %llu bytes "
+                        "left hold at most %llu", e->name, (unsigned long long)e->count,
+                        (unsigned long long)left, (unsigned long long)most);
+        return -1;
+    }
+    return 0;
+}
+
 static int skip_element(FILE *file, int binary, const ply_element *e, char *error, size_t error_size) {
-    long long row;
-    int k, status;
+    uint64_t row;
+    int k, status, size_known;
     double value;
+    /* Rows without properties take no bytes: nothing to read. */
+    if (e->property_count == 0) return 0;
+    if (check_room(file, binary, e, &size_known, error, error_size) != 0) return -1;
     for (row = 0; row < e->count; ++row)
         for (k = 0; k < e->property_count; ++k)
             if ((status = read_property(file, binary, &e->properties[k], &value)) != 0)
@@ -248,25 +292,36 @@ static int find_xyz(const ply_element *e, int where[3], char *error, size_t erro
     return 0;
 }
 
+/* One vertex row; x, y and z go to xyz. */
+static int read_vertex(FILE *file, int binary, const ply_element *e, const int where[3], float *xyz) {
+    int k, axis, status;
+    for (k = 0; k < e->property_count; ++k) {
+        double value = 0.0;
+        if ((status = read_property(file, binary, &e->properties[k], &value)) != 0) return status;
+        for (axis = 0; axis < 3; ++axis)
+            if (where[axis] == k) xyz[axis] = (float)value;
+    }
+    return 0;
+}
+
 static int read_vertices(FILE *file, int binary, const ply_element *e, ply_cloud *out,
                          char *error, size_t error_size) {
-    int where[3], k, axis, status;
-    long long row;
+    int where[3], status, size_known;
+    size_t row, capacity = 0;
     if (find_xyz(e, where, error, error_size) != 0) return -1;
+    if (check_room(file, binary, e, &size_known, error, error_size) != 0) return -1;
     out->count = (size_t)e->count;
-    out->xyz = malloc(out->count * 3 * sizeof(float) + 1);
-    if (out->xyz == NULL) {
+    if (cloud_reserve_points(&out->xyz, &capacity, cloud_first_capacity(out->count, size_known), out->count) != 0) {
         cloud_set_error(error, error_size, "out of memory for %zu vertices", out->count);
         return -1;
     }
-    for (row = 0; row < e->count; ++row) {
-        for (k = 0; k < e->property_count; ++k) {
-            double value = 0.0;
-            if ((status = read_property(file, binary, &e->properties[k], &value)) != 0)
-                return row_error(status, e, row, error, error_size);
-            for (axis = 0; axis < 3; ++axis)
-                if (where[axis] == k) out->xyz[3 * row + axis] = (float)value;
+    for (row = 0; row < out->count; ++row) {
+        if (cloud_reserve_points(&out->xyz, &capacity, row + 1, out->count) != 0) {
+            cloud_set_error(error, error_size, "out of memory for %zu vertices", out->count);
+            return -1;
         }
+        if ((status = read_vertex(file, binary, e, where, &out->xyz[3 * row])) != 0)
+            return row_error(status, e, row, error, error_size);
     }
     return 0;
 }
