@@ -49,20 +49,48 @@ static void read_all(const char *path, char *buffer, size_t size) {
     buffer[n] = '\0';
 }
 
-void run_cli(cli_result *r, const char *arguments_format, ...) {
-    char arguments[8192], command[8192 + 1200], out_path[512], err_path[512];
-    va_list args;
+/* Runs `shell_prefix 'tool' arguments >stdout_target 2>scratch/stderr.txt`
+ * through the shell; stdout_target NULL is scratch/stdout.txt. */
+static void run_command(cli_result *r, const char *shell_prefix, const char *stdout_target, const char *arguments) {
+    char command[8192 + 1600], out_path[512], err_path[512];
     int status;
-    va_start(args, arguments_format);
-    vsnprintf(arguments, sizeof arguments, arguments_format, args);
-    va_end(args);
     snprintf(out_path, sizeof out_path, "%s/stdout.txt", scratch_dir());
     snprintf(err_path, sizeof err_path, "%s/stderr.txt", scratch_dir());
-    snprintf(command, sizeof command, "'%s' %s >'%s' 2>'%s'", OPX_CLI_PATH, arguments, out_path, err_path);
+    remove(out_path);
+    snprintf(command, sizeof command, "%s'%s' %s >'%s' 2>'%s'", shell_prefix, OPX_CLI_PATH, arguments,
+             stdout_target != NULL ? stdout_target : out_path, err_path);
     status = system(command);
     r->code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     read_all(out_path, r->out, sizeof r->out);
     read_all(err_path, r->err, sizeof r->err);
+}
+
+void run_cli(cli_result *r, const char *arguments_format, ...) {
+    char arguments[8192];
+    va_list args;
+    va_start(args, arguments_format);
+    vsnprintf(arguments, sizeof arguments, arguments_format, args);
+    va_end(args);
+    run_command(r, "", NULL, arguments);
+}
+
+void run_cli_to(cli_result *r, const char *stdout_path, const char *arguments_format, ...) {
+    char arguments[8192];
+    va_list args;
+    va_start(args, arguments_format);
+    vsnprintf(arguments, sizeof arguments, arguments_format, args);
+    va_end(args);
+    run_command(r, "", stdout_path, arguments);
+}
+
+void run_cli_file_limit(cli_result *r, unsigned blocks, const char *arguments_format, ...) {
+    char arguments[8192], prefix[64];
+    va_list args;
+    va_start(args, arguments_format);
+    vsnprintf(arguments, sizeof arguments, arguments_format, args);
+    va_end(args);
+    snprintf(prefix, sizeof prefix, "ulimit -f %u && exec ", blocks);
+    run_command(r, prefix, NULL, arguments);
 }
 
 double json_field(const char *json, const char *key) {

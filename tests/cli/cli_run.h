@@ -29,6 +29,22 @@ void run_cli(cli_result *r, const char *arguments_format, ...)
 #endif
     ;
 
+/* As run_cli, with the tool's stdout sent to stdout_path (e.g. /dev/full);
+ * r->out is then empty. */
+void run_cli_to(cli_result *r, const char *stdout_path, const char *arguments_format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* As run_cli, with the tool's files limited to `blocks` blocks of 512
+ * bytes (the shell's ulimit -f, which limits its stdout and stderr too). */
+void run_cli_file_limit(cli_result *r, unsigned blocks, const char *arguments_format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
 /* The number after "\"key\": " in json (the first one); fails the test
  * when missing. */
 double json_field(const char *json, const char *key);

@@ -2,7 +2,8 @@
  * cli_ingest: `octoprox ingest` and `octoprox info` on clouds written here
  * (PCD ascii/binary, PLY ascii/binary_little_endian): the map equals the
  * library's own insert of the same points, updates accumulate, and bad
- * command lines (exit 2) and malformed files (exit 3) give messages.
+ * command lines (exit 2), malformed files and output that cannot be
+ * written (exit 3) give messages.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -17,6 +18,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -241,6 +244,55 @@ static void malformed_files_exit_3(void **state) {
     assert_int_equal(r.code, 3);
 }
 
+static long file_size(const char *path) {
+    struct stat info;
+    return stat(path, &info) == 0 ? (long)info.st_size : -1;
+}
+
+/* /dev/full takes no byte: every report written there must fail loudly. */
+static void a_report_to_a_full_device_exits_3(void **state) {
+    static cli_result r;
+    const char *cloud = write_pcd("full.pcd", 1);
+    char map[512];
+    (void)state;
+    if (access("/dev/full", W_OK) != 0) skip();
+    snprintf(map, sizeof map, "%s", scratch_path("full.bt"));
+    run_cli(&r, "ingest '%s' --sensor-pose 0,0,1 --res 0.1 -o '%s'", cloud, map);
+    assert_int_equal(r.code, 0);
+    run_cli_to(&r, "/dev/full", "info '%s'", map);
+    if (r.code != 3) fail_msg("info > /dev/full exited %d, not 3; stderr: %s", r.code, r.err);
+    assert_non_null(strstr(r.err, "cannot write the standard output"));
+    run_cli_to(&r, "/dev/full", "info '%s' --json", map);
+    assert_int_equal(r.code, 3);
+    run_cli_to(&r, "/dev/full", "ingest '%s' -o '%s' --json", cloud, map);
+    assert_int_equal(r.code, 3);
+    run_cli_to(&r, "/dev/full", "--help");
+    assert_int_equal(r.code, 3);
+    run_cli_to(&r, "/dev/null", "info '%s'", map);
+    assert_int_equal(r.code, 0);
+}
+
+/* A map larger than the file size limit (ulimit -f 1: 512 bytes): the
+ * save fails with an I/O error (no signal kills the tool) and leaves
+ * neither the map nor its temporary file behind. */
+static void a_map_past_the_file_size_limit_exits_3(void **state) {
+    static cli_result r;
+    const char *cloud = write_pcd("limit.pcd", 1);
+    char map[512], temporary[600], unlimited[512];
+    (void)state;
+    snprintf(map, sizeof map, "%s", scratch_path("limit.bt"));
+    snprintf(temporary, sizeof temporary, "%s.tmp", map);
+    snprintf(unlimited, sizeof unlimited, "%s", scratch_path("unlimited.bt"));
+    run_cli(&r, "ingest '%s' --sensor-pose 0,0,1 --res 0.1 -o '%s'", cloud, unlimited);
+    assert_int_equal(r.code, 0);
+    if (file_size(unlimited) <= 512) fail_msg("the map is only %ld bytes: it fits the limit", file_size(unlimited));
+    run_cli_file_limit(&r, 1, "ingest '%s' --sensor-pose 0,0,1 --res 0.1 -o '%s'", cloud, map);
+    if (r.code != 3) fail_msg("ingest under ulimit -f 1 exited %d, not 3; stderr: %s", r.code, r.err);
+    assert_non_null(strstr(r.err, "limit.bt"));
+    if (file_size(temporary) >= 0) fail_msg("%s is left behind (%ld bytes)", temporary, file_size(temporary));
+    assert_int_equal(file_size(map), -1);
+}
+
 static void every_command_has_help(void **state) {
     static const char *const commands[5] = {"", "info ", "ingest ", "check ", "export "};
     static cli_result r;
@@ -264,6 +316,8 @@ int main(void) {
         cmocka_unit_test(endpoints_mode_has_no_free_space),
         cmocka_unit_test(bad_command_lines_exit_2),
         cmocka_unit_test(malformed_files_exit_3),
+        cmocka_unit_test(a_report_to_a_full_device_exits_3),
+        cmocka_unit_test(a_map_past_the_file_size_limit_exits_3),
         cmocka_unit_test(every_command_has_help),
     };
     make_wall();

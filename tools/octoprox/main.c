@@ -2,9 +2,13 @@
  * octoprox: the command-line face of the library.  Subcommands info,
  * ingest, check and export; see `octoprox --help` and docs/cli.md.
  */
+#define _POSIX_C_SOURCE 200809L
+
 #include "cli.h"
 #include "commands.h"
 
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,14 +36,15 @@ static const char kUsage[] =
     "  0  success (check: no collision)\n"
     "  1  check: a collision was found\n"
     "  2  usage error (unknown command or option, bad value)\n"
-    "  3  input/output error (a file is missing, unreadable or malformed)\n"
+    "  3  input/output error (a file is missing, unreadable or malformed, or\n"
+    "     a file or the standard output cannot be written)\n"
     "  4  internal error (out of memory, a library bug)\n"
     "\n"
     "options:\n"
     "  -h, --help     this help\n"
     "  --version      the library's version\n";
 
-int main(int argc, char **argv) {
+static int run(int argc, char **argv) {
     const char *command;
     if (argc < 2) {
         fputs(kUsage, stderr);
@@ -60,4 +65,31 @@ int main(int argc, char **argv) {
     if (strcmp(command, "export") == 0) return cmd_export(argc - 1, argv + 1);
     fprintf(stderr, "octoprox: unknown command '%s'\ntry 'octoprox --help'\n", command);
     return CLI_EXIT_USAGE;
+}
+
+/* A report that never reached its file (a full disk, /dev/full, a file
+ * size limit) is an input/output error, not a success: stdout is flushed
+ * and closed here, where its last write errors show. */
+static int close_stdout(int code) {
+    int failed = 0, error = 0;
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        failed = 1;
+        error = errno;
+    }
+    if (fclose(stdout) != 0 && !failed) {
+        failed = 1;
+        error = errno;
+    }
+    if (!failed) return code;
+    fprintf(stderr, "octoprox: cannot write the standard output: %s\n", error != 0 ? strerror(error) : "write error");
+    return code == CLI_EXIT_OK || code == CLI_EXIT_COLLISION ? CLI_EXIT_INPUT : code;
+}
+
+int main(int argc, char **argv) {
+    /* Past a file size limit (ulimit -f) a write then fails with EFBIG,
+     * which is reported (exit 3), instead of the signal killing the
+     * process halfway through a file. */
+    signal(SIGXFSZ, SIG_IGN);
+    return close_stdout(run(argc, argv));
 }
