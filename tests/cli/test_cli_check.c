@@ -135,6 +135,15 @@ static void bad_command_lines_exit_2(void **state) {
     expect_exit(2, "--urdf needs", "check '%s' --urdf", map);
 }
 
+/* A path whose one waypoint line is 70000 characters: "0000...0001". */
+static const char *write_long_line_csv(void) {
+    static char text[70100];
+    size_t n = (size_t)snprintf(text, sizeof text, "slide\n");
+    memset(text + n, '0', 69999);
+    snprintf(text + n + 69999, sizeof text - n - 69999, "1\n");
+    return write_text("longline.csv", text);
+}
+
 static void bad_files_exit_3(void **state) {
     const char *map = scene_map(), *urdf = scene_urdf();
     (void)state;
@@ -145,6 +154,10 @@ static void bad_files_exit_3(void **state) {
                 write_text("nomesh.urdf", "<robot name=\"m\"><link name=\"a\"><collision><geometry>"
                                           "<mesh filename=\"package://nowhere/m.stl\"/></geometry></collision></link></robot>"));
     expect_exit(3, "bad.csv:3", "check '%s' --urdf '%s' --path '%s'", map, urdf, write_text("bad.csv", "slide\n0\nx\n"));
+    expect_exit(3, "joint slide is named twice", "check '%s' --urdf '%s' --path '%s'", map, urdf,
+                write_text("twice.csv", "slide,slide\n0,1\n"));
+    expect_exit(3, "longline.csv:2: the line is longer than", "check '%s' --urdf '%s' --path '%s'", map, urdf,
+                write_long_line_csv());
     expect_exit(3, "2 values", "check '%s' --urdf '%s' --path '%s'", map, urdf, write_text("wide.csv", "slide\n0,1\n"));
     expect_exit(3, "no waypoint", "check '%s' --urdf '%s' --path '%s'", map, urdf, write_text("empty.csv", "slide\n"));
     expect_exit(3, "elbow", "check '%s' --urdf '%s' --path '%s'", map, urdf, write_text("elbow.csv", "elbow\n1\n"));

@@ -4,6 +4,7 @@
 #include "path_csv.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +36,7 @@ static size_t split_cells(char *line, char **cells, size_t capacity) {
 
 static int read_header(char *line, path_csv *out, char *error, size_t error_size) {
     char *cells[CSV_MAX_COLUMNS];
-    size_t n = split_cells(line, cells, CSV_MAX_COLUMNS), i;
+    size_t n = split_cells(line, cells, CSV_MAX_COLUMNS), i, j;
     if (n > CSV_MAX_COLUMNS) {
         snprintf(error, error_size, "more than %d columns", CSV_MAX_COLUMNS);
         return -1;
@@ -47,6 +48,13 @@ static int read_header(char *line, path_csv *out, char *error, size_t error_size
             snprintf(error, error_size, "header column %zu has no joint name", i + 1);
             return -1;
         }
+        /* One joint cannot take two values in one waypoint. */
+        for (j = 0; j < i; ++j)
+            if (strcmp(out->names[j], cells[i]) == 0) {
+                snprintf(error, error_size, "joint %s is named twice in the header (columns %zu and %zu)", cells[i],
+                         j + 1, i + 1);
+                return -1;
+            }
         if ((out->names[i] = strdup(cells[i])) == NULL) return -1;
         out->joint_count = i + 1;
     }
@@ -63,7 +71,9 @@ static int read_row(char *line, path_csv *out, size_t *capacity, char *error, si
     }
     if (out->waypoint_count == *capacity) {
         const size_t bigger = *capacity ? 2 * *capacity : 64;
-        double *values = realloc(out->values, bigger * out->joint_count * sizeof(double));
+        double *values;
+        if (bigger > SIZE_MAX / sizeof(double) / out->joint_count) return -1;
+        values = realloc(out->values, bigger * out->joint_count * sizeof(double));
         if (values == NULL) return -1;
         out->values = values;
         *capacity = bigger;
@@ -85,8 +95,13 @@ static int read_lines(FILE *file, path_csv *out, char *reason, size_t reason_siz
     static char line[CSV_LINE_MAX];
     size_t capacity = 0;
     while (fgets(line, sizeof line, file) != NULL) {
-        char *text = trim(line);
+        char *text;
         ++*line_number;
+        if (strchr(line, '\n') == NULL && !feof(file)) {
+            snprintf(reason, reason_size, "the line is longer than %d bytes", CSV_LINE_MAX - 2);
+            return -1;
+        }
+        text = trim(line);
         if (text[0] == '\0' || text[0] == '#') continue;
         if (out->names == NULL ? read_header(text, out, reason, reason_size) != 0
                                : read_row(text, out, &capacity, reason, reason_size) != 0)
