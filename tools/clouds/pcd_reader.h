@@ -7,6 +7,9 @@
  * COUNT 1; float64 values are rounded to float32); any other fields (rgb,
  * rgba, normals, intensity...) are skipped.  DATA binary_compressed (LZF) is rejected with
  * a clear message: convert the file to binary first (pcl_convert_pcd_ascii_binary).
+ * The header is checked strictly (whole numbers, WIDTH and HEIGHT below
+ * 2^32, at most 32 fields); a header announcing more points than the rest
+ * of the file can hold is an error before anything is allocated for them.
  */
 #ifndef OPX_CLOUDS_PCD_READER_H
 #define OPX_CLOUDS_PCD_READER_H

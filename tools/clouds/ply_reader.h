@@ -5,9 +5,11 @@
  * Supported: format ascii 1.0 and binary_little_endian 1.0; the `vertex`
  * element's x, y and z as float/float32 or double/float64 (doubles are
  * rounded to float32); any other vertex properties (colours, normals) are
- * skipped.  Elements before `vertex` are skipped when their properties are
- * scalars (and, in ascii files, also when they are lists); elements after
- * it (faces) are not read.  binary_big_endian is rejected by name.
+ * skipped.  Elements before `vertex` are skipped (scalar and list
+ * properties, lists of at most a million items); elements after it
+ * (faces) are not read.  binary_big_endian is rejected by name.  An
+ * element announcing more rows than the rest of the file can hold is an
+ * error before anything is read or allocated for it.
  */
 #ifndef OPX_CLOUDS_PLY_READER_H
 #define OPX_CLOUDS_PLY_READER_H
