@@ -40,8 +40,10 @@ using AttemptFactory = std::function<std::unique_ptr<Attempt>()>;
 // A library fault the sweep finds and that is not mended yet: its errors
 // are printed as KNOWN and do not fail the case.  An error matches when its
 // kind is `kind` ("status", "changed", "leak", ...) and its message holds
-// `message_part`.
+// `message_part`.  A fault the sweep steps around instead (a crash) has the
+// kind kNotChecked.
 struct KnownFault {
+    static constexpr const char *kNotChecked = "not checked";
     std::string kind;
     std::string message_part;
     std::string why;
