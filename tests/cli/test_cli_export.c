@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <cmocka.h>
 
@@ -131,11 +132,42 @@ static void bad_exports_exit_2_or_3(void **state) {
     assert_int_equal(r.code, 3);
 }
 
+static long file_size(const char *path) {
+    struct stat info;
+    return stat(path, &info) == 0 ? (long)info.st_size : -1;
+}
+
+/* Meshes larger than the file size limit (ulimit -f 1: 512 bytes): an
+ * I/O error, and no truncated mesh (nor its .mtl) is left behind. */
+static void meshes_past_the_file_size_limit_exit_3(void **state) {
+    static const char *const kinds[2] = {"obj", "ply"};
+    static cli_result r;
+    int i;
+    (void)state;
+    for (i = 0; i < 2; ++i) {
+        char name[32], mesh[512], mtl[600];
+        snprintf(name, sizeof name, "whole.%s", kinds[i]);
+        snprintf(mesh, sizeof mesh, "%s", scratch_path(name));
+        run_cli(&r, "export '%s' --%s '%s'", scene_map(), kinds[i], mesh);
+        assert_int_equal(r.code, 0);
+        if (file_size(mesh) <= 512) fail_msg("%s is only %ld bytes: it fits the limit", mesh, file_size(mesh));
+        snprintf(name, sizeof name, "limited.%s", kinds[i]);
+        snprintf(mesh, sizeof mesh, "%s", scratch_path(name));
+        snprintf(mtl, sizeof mtl, "%s.mtl", mesh);
+        run_cli_file_limit(&r, 1, "export '%s' --%s '%s'", scene_map(), kinds[i], mesh);
+        if (r.code != 3) fail_msg("export --%s under ulimit -f 1 exited %d, not 3; stderr: %s", kinds[i], r.code, r.err);
+        assert_non_null(strstr(r.err, "cannot be written"));
+        assert_int_equal(file_size(mesh), -1);
+        assert_int_equal(file_size(mtl), -1);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(obj_holds_every_cell_and_the_robot),
         cmocka_unit_test(ply_holds_cubes_or_points_and_red_colliding_links),
         cmocka_unit_test(bad_exports_exit_2_or_3),
+        cmocka_unit_test(meshes_past_the_file_size_limit_exit_3),
     };
     return cmocka_run_group_tests_name("cli_export", tests, NULL, NULL);
 }

@@ -1,6 +1,7 @@
 /* Grouped polygon soups as OBJ and PLY: see mesh_out.h. */
 #include "mesh_out.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -117,6 +118,20 @@ static size_t *faces_by_group(const mesh_out *m, size_t *starts) {
     return order;
 }
 
+/* Closes a file just written: 0, or -1 with errno set when a write or the
+ * close failed (a full disk, a file size limit); the failed file is then
+ * removed, so no truncated mesh is left behind. */
+static int finish_file(FILE *file, const char *path) {
+    const int write_failed = ferror(file);
+    int error = errno; /* the failed write's */
+    const int close_failed = fclose(file) != 0;
+    if (!write_failed && !close_failed) return 0;
+    if (!write_failed) error = errno;
+    remove(path);
+    errno = error != 0 ? error : EIO;
+    return -1;
+}
+
 static int write_mtl(const mesh_out *m, const char *path) {
     FILE *file = fopen(path, "w");
     size_t g;
@@ -124,7 +139,7 @@ static int write_mtl(const mesh_out *m, const char *path) {
     for (g = 0; g < m->group_count; ++g)
         fprintf(file, "newmtl %s\nKd %.3f %.3f %.3f\n\n", m->groups[g].name, m->groups[g].rgb[0] / 255.0,
                 m->groups[g].rgb[1] / 255.0, m->groups[g].rgb[2] / 255.0);
-    return fclose(file) == 0 ? 0 : -1;
+    return finish_file(file, path);
 }
 
 static void write_obj_faces(FILE *file, const mesh_out *m, const size_t *order, const size_t *starts) {
@@ -159,7 +174,12 @@ int mesh_write_obj(const mesh_out *m, const char *path) {
             fprintf(file, "v %.6f %.6f %.6f\n", m->vertices[3 * v], m->vertices[3 * v + 1], m->vertices[3 * v + 2]);
         write_obj_faces(file, m, order, starts);
     }
-    status = file != NULL && fclose(file) == 0 ? 0 : -1;
+    status = file != NULL ? finish_file(file, path) : -1;
+    if (status != 0) {
+        const int error = errno;
+        remove(mtl);
+        errno = error;
+    }
     free(order);
     free(starts);
     return status;
@@ -184,5 +204,5 @@ int mesh_write_ply(const mesh_out *m, const char *path) {
         fwrite(&n, 1, 1, file);
         fwrite(face, sizeof(uint32_t), n, file);
     }
-    return fclose(file) == 0 ? 0 : -1;
+    return finish_file(file, path);
 }
