@@ -121,6 +121,16 @@ static void expect_exit(int code, const char *message, const char *format, ...) 
     if (strstr(r.err, message) == NULL) fail_msg("'octoprox %s': stderr \"%s\" lacks \"%s\"", arguments, r.err, message);
 }
 
+/* "a0=0,a1=0,...": count distinct joints. */
+static const char *many_joints(int count) {
+    static char text[4096];
+    size_t n = 0;
+    int i;
+    for (i = 0; i < count && n < sizeof text; ++i)
+        n += (size_t)snprintf(text + n, sizeof text - n, "%sa%x=0", i ? "," : "", (unsigned)i);
+    return text;
+}
+
 static void bad_command_lines_exit_2(void **state) {
     const char *map = scene_map(), *urdf = scene_urdf();
     (void)state;
@@ -133,6 +143,9 @@ static void bad_command_lines_exit_2(void **state) {
     expect_exit(2, "--base-pose needs", "check '%s' --urdf '%s' --base-pose 1,2,3,4", map, urdf);
     expect_exit(2, "unknown option '--fast'", "check '%s' --urdf '%s' --fast", map, urdf);
     expect_exit(2, "--urdf needs", "check '%s' --urdf", map);
+    expect_exit(2, "--joints names joint slide twice", "check '%s' --urdf '%s' --joints slide=1,slide=2", map, urdf);
+    expect_exit(2, "--joints names more than 512 joints", "check '%s' --urdf '%s' --joints %s", map, urdf,
+                many_joints(513));
 }
 
 /* A path whose one waypoint line is 70000 characters: "0000...0001". */

@@ -59,15 +59,22 @@ int robot_parse_joints(const char *text, char *buffer, size_t buffer_size, const
     strcpy(buffer, text);
     for (item = strtok_r(buffer, ",", &save); item != NULL; item = strtok_r(NULL, ",", &save)) {
         char *equals = strchr(item, '=');
-        if (equals == NULL || equals == item || cli_parse_double(equals + 1, &values[count]) != 0) {
-            snprintf(error, error_size, "--joints item '%s' is not name=value (a finite number)", item);
-            return -1;
-        }
+        int i;
         if (count == capacity) {
             snprintf(error, error_size, "--joints names more than %d joints", capacity);
             return -1;
         }
+        if (equals == NULL || equals == item || cli_parse_double(equals + 1, &values[count]) != 0) {
+            snprintf(error, error_size, "--joints item '%s' is not name=value (a finite number)", item);
+            return -1;
+        }
         *equals = '\0';
+        /* One joint cannot take two values. */
+        for (i = 0; i < count; ++i)
+            if (strcmp(names[i], item) == 0) {
+                snprintf(error, error_size, "--joints names joint %s twice", item);
+                return -1;
+            }
         names[count++] = item;
     }
     return count;
