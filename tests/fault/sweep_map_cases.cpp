@@ -12,6 +12,7 @@ namespace {
 constexpr double kResolution = 0.1;
 constexpr size_t kMapPoints = 300;
 constexpr size_t kFramePoints = 60;
+constexpr size_t kLargeFramePoints = 700;   // the node pool grows several times
 
 // The small map every case starts from, as a .ot image.
 const std::vector<unsigned char> &base_image() {
@@ -84,11 +85,12 @@ private:
 
 class InsertFrame : public Attempt {
 public:
-    explicit InsertFrame(int32_t mode) : tree_(load_base_map()), mode_(mode), cloud_(room_cloud(kFramePoints, 2)) {}
+    InsertFrame(int32_t mode, size_t points)
+        : tree_(load_base_map()), mode_(mode), points_(points), cloud_(room_cloud(points, 2)) {}
     ~InsertFrame() override { opx_octree_destroy(tree_); }
     opx_status call() override {
         const opx_insert_options options = sensor_insert_options(mode_);
-        return opx_octree_insert_points(tree_, cloud_.data(), kFramePoints, 0, OPX_SCALAR_FLOAT32, &options,
+        return opx_octree_insert_points(tree_, cloud_.data(), points_, 0, OPX_SCALAR_FLOAT32, &options,
                                         &report_);
     }
     void record_state(Record &record) override { record_map(record, tree_); }
@@ -102,6 +104,7 @@ public:
 private:
     opx_octree *tree_;
     int32_t mode_;
+    size_t points_;
     std::vector<float> cloud_;
     opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
 };
@@ -204,9 +207,13 @@ std::vector<SweepCase> map_and_robot_cases() {
         make_case<LoadMessage>("opx_octree_load_message binary", {}, 1),
         make_case<LoadMessage>("opx_octree_load_message full", {}, 0),
         make_case<InsertFrame>("opx_octree_insert_points ray-cast", {kPartialFrame, kPartialFrameRetry},
-                               OPX_INSERT_RAYCAST),
+                               OPX_INSERT_RAYCAST, kFramePoints),
         make_case<InsertFrame>("opx_octree_insert_points endpoints", {kPartialFrame, kPartialFrameRetry},
-                               OPX_INSERT_ENDPOINTS),
+                               OPX_INSERT_ENDPOINTS, kFramePoints),
+        make_case<InsertFrame>("opx_octree_insert_points ray-cast, large frame",
+                               {kPartialFrame, kPartialFrameRetry}, OPX_INSERT_RAYCAST, kLargeFramePoints),
+        make_case<InsertFrame>("opx_octree_insert_points endpoints, large frame",
+                               {kPartialFrame, kPartialFrameRetry}, OPX_INSERT_ENDPOINTS, kLargeFramePoints),
         make_case<SaveImage>("opx_octree_save_memory .bt", {kSaveStream}, OPX_FORMAT_BT),
         make_case<SaveImage>("opx_octree_save_memory .ot", {kSaveStream}, OPX_FORMAT_OT),
         make_case<LoadUrdf>("opx_linkset_load_urdf_string", {kUrdfCatch, kUrdfdomNumbers, kTinyXmlLeak}),
