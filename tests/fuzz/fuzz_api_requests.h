@@ -1,0 +1,20 @@
+/*
+ * Fuzzed query requests of the call-sequence fuzzer, and the checks of
+ * their results that query.h's documentation allows.
+ */
+#ifndef OPX_FUZZ_API_REQUESTS_H
+#define OPX_FUZZ_API_REQUESTS_H
+
+#include "fuzz_api.h"
+
+void take_collision_request(fuzz_input *in, opx_collision_request *request);
+void take_distance_request(fuzz_input *in, opx_distance_request *request);
+void take_path_request(fuzz_input *in, opx_path_request *request);
+
+/* request NULL: the defaults. */
+void check_collision_result(const opx_collision_request *request, const opx_collision_result *result);
+void check_distance_result(const opx_distance_request *request, const opx_distance_result *result);
+/* Two engines' answers to one exact distance request. */
+void check_same_distance(const opx_distance_result *a, const opx_distance_result *b);
+
+#endif /* OPX_FUZZ_API_REQUESTS_H */

@@ -1,0 +1,15 @@
+/*
+ * A scratch file per fuzz process, for readers that take a path: each
+ * input is written over it (the file is made once, removed at exit).
+ */
+#ifndef OPX_FUZZ_FILE_H
+#define OPX_FUZZ_FILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Writes the input into the process's scratch file, whose name ends in
+ * `suffix` (the same every call), and returns its path. */
+const char *fuzz_scratch_file(const char *suffix, const uint8_t *data, size_t size);
+
+#endif /* OPX_FUZZ_FILE_H */
