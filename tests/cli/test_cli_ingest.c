@@ -193,6 +193,10 @@ static void bad_command_lines_exit_2(void **state) {
     expect_usage_error(line, "--res needs");
     snprintf(line, sizeof line, "ingest '%s' -o x.bt --res nan", cloud);
     expect_usage_error(line, "--res needs");
+    snprintf(line, sizeof line, "ingest '%s' -o x.bt --res 5e-324", cloud);
+    expect_usage_error(line, "resolution");
+    snprintf(line, sizeof line, "ingest '%s' -o x.bt --res 2e6", cloud);
+    expect_usage_error(line, "resolution");
     expect_usage_error("ingest cloud.xyz -o x.bt", "not a .pcd or .ply file");
     snprintf(line, sizeof line, "ingest '%s' -o", cloud);
     expect_usage_error(line, "-o needs");

@@ -117,6 +117,9 @@ static int open_map(const ingest_args *a, opx_octree **map, int *updated) {
     if (!*updated) {
         if (a->resolution > 0.0) options.resolution = a->resolution;
         status = opx_octree_create(&options, map);
+        /* --res is the only option given to a new map: the library's range
+         * check is the command line's. */
+        if (status == OPX_ERROR_INVALID_ARGUMENT) return cli_usage("ingest", "--res: %s", opx_last_error());
         return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "creating the map");
     }
     status = opx_octree_load_file(a->output, NULL, map);
