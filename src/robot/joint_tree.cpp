@@ -2,6 +2,8 @@
 
 #include "capi/error.hpp"
 
+#include <cmath>
+
 namespace octoprox {
 namespace {
 
@@ -69,23 +71,38 @@ void JointTree::order_joints(const std::string &source) {
 
 // A mimic of a mimic follows the first joint of its chain:
 // a = m1 * b + o1, b = m2 * c + o2  =>  a = m1 m2 c + (m1 o2 + o1).
+// A joint's composition is kept once known, so every chain is walked once
+// (linear time, however long the chains).
 void JointTree::resolve_mimics(const std::string &source) {
     const size_t n = joints_.size();
     master_.assign(n, kNoIndex);
     multiplier_.assign(n, 1.0);
     offset_.assign(n, 0.0);
+    std::vector<uint32_t> path;
+    std::vector<bool> on_path(n, false);
     for (uint32_t j = 0; j < n; ++j) {
         uint32_t current = j;
-        double m = 1.0, o = 0.0;
-        for (size_t steps = 0; joints_[current].mimic != kNoIndex; ++steps) {
-            if (steps >= n) throw_tree_error(source, "joint '" + joints_[j].name + "': its mimic joints form a loop");
-            const Joint &link = joints_[current];
-            o = m * link.offset + o;
-            m = m * link.multiplier;
-            current = link.mimic;
+        path.clear();
+        while (master_[current] == kNoIndex && joints_[current].mimic != kNoIndex) {
+            if (on_path[current]) throw_tree_error(source, "joint '" + joints_[j].name + "': its mimic joints form a loop");
+            on_path[current] = true;
+            path.push_back(current);
+            current = joints_[current].mimic;
         }
-        master_[j] = current, multiplier_[j] = m, offset_[j] = o;
+        if (master_[current] == kNoIndex) master_[current] = current;  // a joint that mimics none
+        for (auto k = path.rbegin(); k != path.rend(); ++k) compose_mimic(*k, source);
+        for (uint32_t k : path) on_path[k] = false;
     }
+}
+
+// Joint k from the composition of the joint it mimics, already known.
+void JointTree::compose_mimic(uint32_t k, const std::string &source) {
+    const Joint &joint = joints_[k];
+    master_[k] = master_[joint.mimic];
+    multiplier_[k] = joint.multiplier * multiplier_[joint.mimic];
+    offset_[k] = joint.multiplier * offset_[joint.mimic] + joint.offset;
+    if (!(std::fabs(multiplier_[k]) <= kMaxMimicFactor && std::fabs(offset_[k]) <= kMaxMimicFactor))
+        throw_tree_error(source, "joint '" + joint.name + "': its mimic chain composes to a multiplier or offset beyond +-1e12");
 }
 
 void JointTree::set_commanded(const double *values) {

@@ -18,6 +18,10 @@ enum class JointType : int { kFixed = 0, kRevolute, kContinuous, kPrismatic, kFl
 
 constexpr uint32_t kNoIndex = UINT32_MAX;
 
+// Largest multiplier or offset a chain of mimic joints may compose to:
+// positions stay finite for any sane joint value.
+constexpr double kMaxMimicFactor = 1e12;
+
 struct Joint {
     std::string name;
     JointType type = JointType::kFixed;
@@ -37,7 +41,8 @@ struct Joint {
 class JointTree {
 public:
     // Checks the tree (every link but the root is the child of exactly one
-    // joint, no cycles, mimic joints exist and do not loop) and precomputes
+    // joint, no cycles, mimic joints exist and do not loop, mimic chains
+    // compose to at most kMaxMimicFactor) and precomputes
     // the FK order.  Throws ApiError(OPX_ERROR_CORRUPT) naming `source`.
     void build(std::vector<Joint> joints, size_t link_count, uint32_t root_link, const std::string &source);
 
@@ -62,6 +67,7 @@ private:
     void check_links(const std::string &source) const;
     void order_joints(const std::string &source);
     void resolve_mimics(const std::string &source);
+    void compose_mimic(uint32_t joint, const std::string &source);
 
     std::vector<Joint> joints_;
     std::unordered_map<std::string, uint32_t> by_name_;

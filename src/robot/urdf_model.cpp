@@ -2,6 +2,7 @@
 
 #include "capi/error.hpp"
 #include "robot/mesh_loader.hpp"
+#include "robot/urdf_values.hpp"
 #include "robot/urdf_xml.hpp"
 
 #include <urdf_parser/urdf_parser.h>
@@ -76,6 +77,9 @@ private:
             auto cached = cache_.find(path);
             if (cached == cache_.end()) cached = cache_.emplace(path, load_mesh_file(path)).first;
             TriangleMesh mesh = scaled(cached->second, scale);
+            for (const Vec3 &v : mesh.vertices)
+                if (!(v.cwiseAbs().maxCoeff() <= kMaxUrdfMagnitude))
+                    throw_corrupt("mesh '" + m.filename + "' has a vertex beyond +-1e6 m once scaled");
             def.kind = ShapeKind::kMesh;
             def.vertices = std::move(mesh.vertices);
             def.triangles = std::move(mesh.triangles);
@@ -88,27 +92,19 @@ private:
     std::map<std::string, TriangleMesh> cache_;
 };
 
-urdf::ModelInterfaceSharedPtr parse_model(const UrdfInput &input) {
+// urdfdom parses the outline's checked copy, never the caller's text: it
+// then has nothing to reject (it would say why on stderr only).
+urdf::ModelInterfaceSharedPtr parse_model(const UrdfOutline &outline, const std::string &source) {
     urdf::ModelInterfaceSharedPtr model;
     try {
-        model = urdf::parseURDF(input.xml);
+        model = urdf::parseURDF(outline.checked_xml);
+    } catch (const std::bad_alloc &) {
+        throw;
     } catch (const std::exception &error) {
-        throw_corrupt(input.source + " is not a valid URDF: " + error.what());
+        throw ApiError(OPX_ERROR_INTERNAL, source + ": urdfdom failed on the checked URDF: " + error.what());
     }
-    if (!model) throw_corrupt(input.source + " is not a valid URDF (urdfdom rejected it; its reason is on stderr)");
+    if (!model) throw ApiError(OPX_ERROR_INTERNAL, source + ": urdfdom rejected the checked URDF");
     return model;
-}
-
-// urdfdom skips a <collision> it cannot read (it only logs it): say which.
-void check_collisions_kept(const urdf::Link &link, const std::vector<std::string> &kinds, const std::string &source) {
-    if (link.collision_array.size() == kinds.size()) return;
-    for (size_t c = 0; c < kinds.size(); ++c) {
-        const std::string &kind = kinds[c];
-        if (kind != "box" && kind != "sphere" && kind != "cylinder" && kind != "mesh")
-            throw ApiError(OPX_ERROR_UNSUPPORTED, source + ": link '" + link.name + "' collision " + std::to_string(c) +
-                                                      ": geometry <" + kind + "> is not supported (box, sphere, cylinder, mesh)");
-    }
-    throw_corrupt(source + ": link '" + link.name + "': urdfdom could not read one of its <collision> elements (its reason is on stderr)");
 }
 
 void add_links(const urdf::ModelInterface &model, const UrdfOutline &outline, const UrdfInput &input,
@@ -118,8 +114,8 @@ void add_links(const urdf::ModelInterface &model, const UrdfOutline &outline, co
         const std::string &name = outline.links[l];
         const uint32_t index = links.add_link(name);
         const urdf::LinkConstSharedPtr link = model.getLink(name);
-        if (!link) throw_corrupt(input.source + ": link '" + name + "' was not parsed");
-        check_collisions_kept(*link, outline.collision_geometry[l], input.source);
+        if (!link || link->collision_array.size() != outline.collision_counts[l])
+            throw ApiError(OPX_ERROR_INTERNAL, input.source + ": urdfdom did not read link '" + name + "' as checked");
         for (size_t c = 0; c < link->collision_array.size(); ++c) {
             const std::string where = input.source + ": link '" + name + "' collision " + std::to_string(c);
             links.add_shape(index, shapes.build(*link->collision_array[c], where));
@@ -198,9 +194,9 @@ void read_disabled_pairs(const UrdfInput &input, const LinkSet &links, RobotMode
 
 void load_urdf(const UrdfInput &input, LinkSet &links, RobotModel &robot) {
     const UrdfOutline outline = read_urdf_outline(input.xml, input.source);
-    const urdf::ModelInterfaceSharedPtr model = parse_model(input);
+    const urdf::ModelInterfaceSharedPtr model = parse_model(outline, input.source);
     if (model->links_.size() != outline.links.size() || model->joints_.size() != outline.joints.size())
-        throw_corrupt(input.source + ": urdfdom read a different number of links or joints than the file has");
+        throw ApiError(OPX_ERROR_INTERNAL, input.source + ": urdfdom read another number of links or joints");
     add_links(*model, outline, input, links);
     build_joints(*model, outline, input, robot);
     if (!input.srdf_path.empty()) read_disabled_pairs(input, links, robot);

@@ -90,9 +90,8 @@ static void malformed_urdfs_are_corrupt(void **state) {
                         OPX_ERROR_CORRUPT, "its mimic joints form a loop");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"/><link name=\"a\"/></robot>", OPX_ERROR_CORRUPT,
                         "two links have the same name");
-    /* Two roots: urdfdom refuses the tree. */
     expect_load_failure("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/></robot>", OPX_ERROR_CORRUPT,
-                        "not a valid URDF");
+                        "links 'a' and 'b' are both roots");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"><collision><geometry><sphere radius=\"-1\"/>"
                         "</geometry></collision></link></robot>",
                         OPX_ERROR_CORRUPT, "link 'a' collision 0 sphere radius is -1");
@@ -101,7 +100,7 @@ static void malformed_urdfs_are_corrupt(void **state) {
                         OPX_ERROR_UNSUPPORTED, "link 'a' collision 0: geometry <capsule> is not supported");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"><collision><geometry><sphere/>"
                         "</geometry></collision></link></robot>",
-                        OPX_ERROR_CORRUPT, "link 'a': urdfdom could not read one of its <collision>");
+                        OPX_ERROR_CORRUPT, "link 'a' collision 0 sphere has no radius");
     expect_load_failure("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
                         "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
                         "<axis xyz=\"0 0 0\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
