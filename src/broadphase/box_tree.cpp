@@ -33,7 +33,18 @@ void BoxTree::clear() {
     reference_valid_ = false;
 }
 
+// A build that throws (out of memory) leaves an empty tree, never nodes
+// half written that a later walk would follow.
 void BoxTree::build(const Aabb *boxes, size_t count, const BoxTreeOptions &options) {
+    try {
+        build_nodes(boxes, count, options);
+    } catch (...) {
+        clear();
+        throw;
+    }
+}
+
+void BoxTree::build_nodes(const Aabb *boxes, size_t count, const BoxTreeOptions &options) {
     // Node indices are int32_t and sort payloads uint32_t.
     if (count > (size_t{1} << 30)) throw std::length_error("BoxTree: too many boxes");
     root_ = -1;

@@ -125,6 +125,7 @@ public:
     }
 
 private:
+    void build_nodes(const Aabb *boxes, size_t count, const BoxTreeOptions &options);
     void compute_codes(const Aabb *boxes, size_t count, int morton_bits);
     void make_leaves(const Aabb *boxes);
     void link_radix_tree();
