@@ -133,14 +133,19 @@ void LinkSet::build_topology() const {
     for (const PlacedShape &p : placed_)
         boxes.push_back(p.box.empty() ? Aabb::from_center(p.core.center, Vec3::Zero()) : p.box);
     tree_.build(boxes);
+    // The boxes are written before the flag is cleared: a reader on another
+    // thread that sees the topology fresh must see the whole tree.
+    refit_boxes();
     topology_stale_.store(false, std::memory_order_release);
-    refit();
+}
+
+// A stale topology is rebuilt from the current boxes later: nothing to do.
+void LinkSet::refit() const {
+    if (!topology_stale_.load(std::memory_order_relaxed)) refit_boxes();
 }
 
 // Reuses box_scratch_, so new poses allocate nothing once the set is built.
-// A stale topology is rebuilt from the current boxes later: nothing to do.
-void LinkSet::refit() const {
-    if (topology_stale_.load(std::memory_order_relaxed)) return;
+void LinkSet::refit_boxes() const {
     box_scratch_.clear();
     for (const PlacedShape &p : placed_) box_scratch_.push_back(p.box);
     tree_.refit(box_scratch_);

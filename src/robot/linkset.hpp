@@ -66,6 +66,7 @@ private:
     void mark_topology_stale();
     void rebuild_stale_topology() const;  // under topology_mutex_
     void build_topology() const;
+    void refit_boxes() const;
     void refit() const;  // after boxes changed
 
     std::vector<Link> links_;
