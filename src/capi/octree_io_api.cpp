@@ -1,33 +1,17 @@
 // C shims: loading and saving OctoMap files, memory images and messages.
 #include "capi/checks.hpp"
+#include "base/file_bytes.hpp"
 #include "capi/handles.hpp"
 #include "octree/octomap_io.hpp"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
-#include <sys/stat.h>
 
 using namespace octoprox;
 using namespace octoprox::capi;
 
 namespace {
-
-std::string read_whole_file(const char *path) {
-    // A directory opens as a stream on Linux and then reads as nothing,
-    // which would be reported as a corrupt map; say what it is.
-    struct stat status;
-    if (::stat(path, &status) == 0 && S_ISDIR(status.st_mode))
-        throw ApiError(OPX_ERROR_IO, format("\"%s\" is a directory, not a map file", path));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ApiError(OPX_ERROR_IO, format("cannot open \"%s\": %s", path, std::strerror(errno)));
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) throw ApiError(OPX_ERROR_IO, format("cannot read \"%s\"", path));
-    return bytes.str();
-}
 
 bool ends_with(const std::string &text, const char *suffix) {
     const size_t n = std::strlen(suffix);
@@ -91,7 +75,7 @@ OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_optio
         require_pointer(out, "out");
         require_pointer(path, "path");
         const OctreeParams params = read_octree_options(options, "options");
-        return hand_out(read_map_file_bytes(read_whole_file(path), params), out);
+        return hand_out(read_map_file_bytes(read_file_bytes(path, "map file"), params), out);
     });
 }
 

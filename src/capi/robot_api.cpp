@@ -1,13 +1,12 @@
 // C shims: link sets from URDF, joints and forward kinematics.
+#include "base/file_bytes.hpp"
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "robot/urdf_model.hpp"
 
 #include <octoprox/robot.h>
 
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -32,13 +31,7 @@ UrdfInput read_options(const opx_urdf_options *in, const std::string &default_ba
     return input;
 }
 
-std::string read_text_file(const char *path) {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    if (!file_exists(path) || !(text << file.rdbuf()))
-        throw ApiError(OPX_ERROR_IO, format("path '%.200s' cannot be read", path));
-    return text.str();
-}
+std::string read_text_file(const char *path) { return read_file_bytes(path, "path"); }
 
 opx_status load(UrdfInput input, opx_linkset **out) {
     auto handle = std::make_unique<opx_linkset>();

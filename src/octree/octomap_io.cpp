@@ -26,6 +26,12 @@ struct Header {
     size_t body_offset = 0;
 };
 
+// A string stream swallows std::bad_alloc and sets badbit, which would then
+// read as a short or corrupt map; with badbit in its exception mask the
+// stream rethrows the original exception, and the caller reports it as
+// out of memory.  (End of input sets eofbit and failbit, never badbit.)
+void rethrow_allocation_failures(std::ios &stream) { stream.exceptions(std::ios::badbit); }
+
 bool starts_with(const std::string &text, const char *prefix) {
     return text.compare(0, std::strlen(prefix), prefix) == 0;
 }
@@ -34,6 +40,7 @@ bool starts_with(const std::string &text, const char *prefix) {
 Header parse_header(const std::string &bytes) {
     Header header;
     std::istringstream in(bytes);
+    rethrow_allocation_failures(in);
     std::string line;
     if (!std::getline(in, line)) throw_corrupt("empty input: no OctoMap header");
     if (starts_with(line, kBinaryHeader)) header.format = MapFormat::kBinary;
@@ -43,6 +50,7 @@ Header parse_header(const std::string &bytes) {
     for (size_t lines = 0; lines < kMaxHeaderLines && std::getline(in, line); ++lines) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream fields(line);
+        rethrow_allocation_failures(fields);
         std::string token;
         fields >> token;
         if (token.empty() || token[0] == '#') continue;
@@ -147,6 +155,7 @@ std::unique_ptr<SensorOctree> read_map_body(const std::string &body, MapFormat f
     tree->setClampingThresMax(params.clamp_max);
     if (!body.empty()) {
         std::istringstream in(body);
+        rethrow_allocation_failures(in);
         if (format == MapFormat::kBinary) tree->readBinaryData(in);
         else tree->readData(in);
     }
@@ -177,6 +186,7 @@ std::string write_map_file_bytes(const SensorOctree &tree, MapFormat format) {
                                        octree.getResolution());
     *written.ptr = '\0';
     std::ostringstream out;
+    rethrow_allocation_failures(out);
     out << (format == MapFormat::kBinary ? kBinaryHeader : kFullHeader)
         << "\n# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
         << "id " << octree.getTreeType() << "\nsize " << octree.size() << "\nres " << resolution
