@@ -30,18 +30,29 @@ public:
 
     void *allocate();
     void release(void *block);  // a block from this pool
+    // Makes the next `blocks` allocate() calls take no memory from the heap
+    // (they cannot throw); throws std::bad_alloc if the slabs cannot grow.
+    void reserve(size_t blocks);
 
     size_t blocks_in_use() const { return in_use_; }
+    // The most blocks in use at once since the last reset: what an update
+    // really drew from the pool (blocks a prune frees are reused).
+    size_t peak_blocks_in_use() const { return peak_in_use_; }
+    void reset_peak() { peak_in_use_ = in_use_; }
     size_t bytes_reserved() const { return reserved_; }  // all slabs
 
 private:
     void add_slab();
+    void push_free(void *block);
+    size_t blocks_available() const;
 
     std::vector<void *> slabs_;
     void *free_ = nullptr;  // released blocks, linked through their first word
     char *next_ = nullptr;  // the unused rest of the newest slab
     char *end_ = nullptr;
     size_t in_use_ = 0;
+    size_t free_count_ = 0;  // blocks on the free list
+    size_t peak_in_use_ = 0;
     size_t reserved_ = 0;
 };
 

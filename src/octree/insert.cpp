@@ -6,6 +6,7 @@
 #include "capi/error.hpp"
 
 #include "octree/bounded_tree.hpp"
+#include "octree/update_reserve.hpp"
 
 #include <cmath>
 
@@ -53,7 +54,6 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     if (settings.raycast && !contains(Vec3(origin.x(), origin.y(), origin.z())))
         throw_invalid("sensor_pose.position lies outside the map cube");
 
-    ++generation_;
     InsertCounts counts;
     const octomap::Pointcloud cloud = usable_points(*this, points, settings, counts);
     octomap::KeySet free_cells, occupied_cells;
@@ -62,6 +62,12 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     } else {
         for (const auto &p : cloud) occupied_cells.insert(tree_->coordToKey(p));
     }
+    // Everything that may allocate happens above or here: the cell updates
+    // below take their nodes from reserved blocks, so a frame goes into the
+    // map whole or, out of memory, not at all.  (An empty map's root is made
+    // by the first update, before any cell changes.)
+    reserve_update(*tree_, free_cells, occupied_cells);
+    ++generation_;
     // The same order as OctoMap's insertPointCloud, so the float log-odds
     // sums are identical.  The scope keeps the inner obstacle boxes.
     const BoundsScope scope(occupied_log_odds_);

@@ -1,0 +1,25 @@
+// All-or-nothing map updates: the child blocks an update will need are
+// taken from the heap before the first cell changes, so running out of
+// memory fails the update before it starts, never half way through it.
+#pragma once
+
+#include "octree/bounded_tree.hpp"
+
+#include <octomap/OcTreeKey.h>
+
+#include <cstddef>
+
+namespace octoprox {
+
+// How many child blocks updating every cell of `first` and `second` (leaf
+// keys, at the finest depth) takes from the pool: one per node on the
+// cells' paths that has no children yet, or does not exist yet, counted
+// once per node.  Exact for OctoMap's updateNode, which creates children
+// within an existing block and expands a pruned node into one block.
+size_t child_blocks_needed(const BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second);
+
+// Makes sure the tree's pool can hand out that many blocks without a heap
+// allocation; throws std::bad_alloc, changing nothing in the map, if not.
+void reserve_update(BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second);
+
+}  // namespace octoprox
