@@ -6,6 +6,8 @@
 #include "query/narrow_phase.hpp"
 
 #include <chrono>
+#include <type_traits>
+#include <utility>
 
 namespace octoprox {
 namespace {
@@ -23,6 +25,10 @@ bool has_volume(const Aabb &box) { return (box.lo.array() < box.hi.array()).all(
 void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
     const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, threshold_log_odds};
     if (!caller_boxes_ && obstacles_.key == key) return;
+    // Nothing is bound until the new tree stands: a build that throws must
+    // not leave a band that a later query on the old frame takes as bound.
+    obstacles_.key = BandKey();
+    caller_boxes_ = false;
     const auto start = Clock::now();
     CellBands bands;
     bands.threshold_log_odds = threshold_log_odds;
@@ -30,25 +36,30 @@ void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
     extract_cell_boxes(tree, bands, obstacles_.cells, nullptr);
     extract_ms_ = ms_since(start);
     build_ms_ = build_tree(obstacles_);
-    caller_boxes_ = false;
     obstacles_.key = key;
 }
 
 // T_{1,1} is the copy of the caller's boxes here.
+// Built aside and swapped in, so a bind that fails (out of memory) leaves
+// the context with what it held before.
 void AmortizedEngine::bind_boxes(std::vector<Aabb> boxes) {
+    static_assert(std::is_nothrow_swappable_v<Band>, "the swap below must not fail half way");
     const auto start = Clock::now();
-    obstacles_.cells.clear();
-    obstacles_.cells.boxes = std::move(boxes);
-    extract_ms_ = ms_since(start);
-    build_ms_ = build_tree(obstacles_);
+    Band band;
+    band.cells.boxes = std::move(boxes);
+    const double extract_ms = ms_since(start);
+    const double build_ms = build_tree(band);
+    std::swap(obstacles_, band);  // band.key: no octree has identity 0, the next octree query binds
     caller_boxes_ = true;
-    obstacles_.key = BandKey();  // no octree has identity 0: the next octree query binds
+    extract_ms_ = extract_ms;
+    build_ms_ = build_ms;
 }
 
 // Unknown cubes depend on the frame only, not on any threshold.
 void AmortizedEngine::bind_unknown(const SensorOctree &tree) {
     const BandKey key{tree.identity(), tree.generation(), 0.0f, 0.0f};
     if (unknown_.key == key) return;
+    unknown_.key = BandKey();  // unbound until built, as in bind
     extract_unknown_boxes(tree.view(), unknown_.cells);
     unknown_.unknown = true;
     build_tree(unknown_);
@@ -58,6 +69,7 @@ void AmortizedEngine::bind_unknown(const SensorOctree &tree) {
 void AmortizedEngine::bind_uncertain(const SensorOctree &tree, float threshold_log_odds, float free_log_odds) {
     const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, free_log_odds};
     if (uncertain_.key == key) return;
+    uncertain_.key = BandKey();  // unbound until built, as in bind
     CellBands bands;
     bands.threshold_log_odds = threshold_log_odds;
     bands.free_log_odds = free_log_odds;
