@@ -42,12 +42,6 @@ run_step("build fault_threads" ${CMAKE_COMMAND} --build ${BINARY_DIR} -j2 --targ
 
 # A race report makes the run fail (TSan's exit code 66), after all of them
 # are printed.
-#
-# --without-unplaced-links: LinkSet::build_topology clears its "stale" flag
-# before refit() writes the boxes of the tree it just built, so a second
-# query thread may walk that tree while the first still writes it.  That
-# race is left out here (it is reported on every run) until it is mended;
-# fault_threads in the normal tree still runs that link set.
 set(ENV{TSAN_OPTIONS} "second_deadlock_stack=1")
 run_step("fault_threads"
-  ${BINARY_DIR}/tests/fault/fault_threads --poses 24 --without-unplaced-links)
+  ${BINARY_DIR}/tests/fault/fault_threads --poses 24)
