@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 namespace octoprox {
 namespace {
@@ -53,20 +54,19 @@ std::string byte_at(const std::string &text, size_t offset) {
 // tinyxml would parse.  Iterative: depth costs no stack here.
 class NestingScan {
 public:
-    explicit NestingScan(const char *text) : p_(text) {}
+    // `text` is NUL terminated at text + size.
+    NestingScan(const char *text, size_t size) : p_(text), end_(text + size) {}
 
     // The deepest nesting; `ambiguous()` tells when the scan stopped at a
     // construct tinyxml may split otherwise (see declaration()).
     size_t run() {
-        if (std::strncmp(p_, "\xEF\xBB\xBF", 3) == 0) p_ += 3;
+        if (starts_with("\xEF\xBB\xBF")) p_ += 3;
         for (;;) {
             skip_space();
             if (*p_ == '\0') break;
             if (*p_ != '<') {  // text: up to the next tag; none at the top level
                 if (depth_ == 0) break;
-                const char *next = std::strchr(p_, '<');
-                if (next == nullptr) break;
-                p_ = next;
+                if (!move_to(p_, "<")) break;
                 continue;
             }
             if (depth_ > 0 && p_[1] == '/') {  // an end tag closes the open element
@@ -99,19 +99,30 @@ private:
     void skip_space() {
         while (is_space(*p_)) ++p_;
     }
-    // Moves just past the first `end` at or after `from`; false at the end.
-    bool skip_past(const char *from, const char *end) {
-        const char *found = std::strstr(from, end);
-        if (found == nullptr) return false;
-        p_ = found + std::strlen(end);
+    bool starts_with(std::string_view prefix) const {
+        return std::string_view(p_, end_ - p_).compare(0, prefix.size(), prefix) == 0;
+    }
+    // Moves to the first `token` at or after `from`; false when none.
+    // (Searches are bounded by the known end: no strstr, which sanitizers
+    // make scan the whole rest of the text at every call.)
+    bool move_to(const char *from, std::string_view token) {
+        const size_t found = std::string_view(from, end_ - from).find(token);
+        if (found == std::string_view::npos) return false;
+        p_ = from + found;
+        return true;
+    }
+    // Moves just past the first `token` at or after `from`; false when none.
+    bool skip_past(const char *from, std::string_view token) {
+        if (!move_to(from, token)) return false;
+        p_ += token.size();
         return true;
     }
 
     // At '<': one node, classified as tinyxml's Identify does.
     bool node() {
         if (starts_with_ignoring_case(p_, "<?xml")) return declaration();
-        if (std::strncmp(p_, "<!--", 4) == 0) return skip_past(p_ + 4, "-->");
-        if (std::strncmp(p_, "<![CDATA[", 9) == 0) return skip_past(p_ + 9, "]]>");
+        if (starts_with("<!--")) return skip_past(p_ + 4, "-->");
+        if (starts_with("<![CDATA[")) return skip_past(p_ + 9, "]]>");
         if (is_name_start(p_[1])) return element_start();
         return skip_past(p_ + 1, ">");  // "<!DOCTYPE", "<?pi", stray "</": unknown
     }
@@ -143,8 +154,7 @@ private:
         ++p_;
         skip_space();
         if (*p_ == '"' || *p_ == '\'') {
-            const char quote[2] = {*p_, '\0'};
-            return skip_past(p_ + 1, quote) && *p_ != '\0';
+            return skip_past(p_ + 1, std::string_view(p_, 1)) && *p_ != '\0';
         }
         while (*p_ != '\0' && !is_space(*p_) && *p_ != '/' && *p_ != '>') {
             if (*p_ == '"' || *p_ == '\'') return false;
@@ -166,7 +176,8 @@ private:
             if (*p_ == '\0') return false;
             const char *keyword = declaration_keyword();
             if (keyword != nullptr) {
-                if (std::memchr(p_, 'I', std::strlen(keyword)) != nullptr) return ambiguous_ = p_, false;
+                if (std::string_view(p_, std::strlen(keyword)).find('I') != std::string_view::npos)
+                    return ambiguous_ = p_, false;
                 if (!attribute()) return false;
             } else {
                 while (*p_ != '\0' && *p_ != '>' && !is_space(*p_)) ++p_;
@@ -182,6 +193,7 @@ private:
     }
 
     const char *p_;
+    const char *const end_;
     const char *ambiguous_ = nullptr;
     size_t depth_ = 0, deepest_ = 0;
 };
@@ -200,8 +212,8 @@ bool is_utf8(const std::string &text, size_t *bad_offset) {
     return true;
 }
 
-size_t xml_nesting_depth(const char *text, const char **ambiguous) {
-    NestingScan scan(text);
+size_t xml_nesting_depth(const std::string &text, const char **ambiguous) {
+    NestingScan scan(text.c_str(), text.size());
     const size_t depth = scan.run();
     if (ambiguous != nullptr) *ambiguous = scan.ambiguous();
     return depth;
@@ -220,7 +232,7 @@ void check_xml_text(const std::string &text, const std::string &source) {
     if (is_byte_order_mark_or_nonchar(text, 0) && static_cast<unsigned char>(text[1]) != 0xBB)
         throw_corrupt(source + ": " + byte_at(text, 0) + " starts U+FFFE or U+FFFF, not a byte order mark");
     const char *ambiguous = nullptr;
-    const size_t depth = xml_nesting_depth(text.c_str(), &ambiguous);
+    const size_t depth = xml_nesting_depth(text, &ambiguous);
     if (ambiguous != nullptr)
         throw_corrupt(source + ": " + byte_at(text, ambiguous - text.c_str()) +
                       ": an XML declaration spells a keyword with a capital I, which XML readers may split "

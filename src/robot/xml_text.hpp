@@ -25,11 +25,11 @@ void check_xml_text(const std::string &text, const std::string &source);
 // first bad byte otherwise.
 bool is_utf8(const std::string &text, size_t *bad_offset = nullptr);
 
-// The deepest element nesting tinyxml reaches on `text` (valid UTF-8, NUL
-// terminated) before it stops: an upper bound that may count elements
+// The deepest element nesting tinyxml reaches on `text` (valid UTF-8, no
+// NUL) before it stops: an upper bound that may count elements
 // after the point where tinyxml gives up, never fewer.  When the scan met
 // a construct whose split tinyxml makes by locale, it stops there and sets
 // *ambiguous to it (else to NULL): the depth is then no bound.
-size_t xml_nesting_depth(const char *text, const char **ambiguous);
+size_t xml_nesting_depth(const std::string &text, const char **ambiguous);
 
 }  // namespace octoprox
