@@ -32,7 +32,7 @@
  *   - Other collision geometry (e.g. <capsule>) fails the load with
  *     OPX_ERROR_UNSUPPORTED naming the link (it is never silently dropped).
  *     A box, sphere or cylinder with a size <= 0, a mesh with a zero scale,
- *     or a <collision> urdfdom cannot read: OPX_ERROR_CORRUPT.
+ *     or a missing or malformed value: OPX_ERROR_CORRUPT.
  *
  * Mesh file names:
  *   - "package://NAME/rest": for each entry DIR of package_dirs in order,
@@ -84,7 +84,11 @@ OPX_API opx_status opx_urdf_options_init(opx_urdf_options *options, size_t size)
  * geometry, a mesh without triangles, a bad SRDF), OPX_ERROR_UNSUPPORTED
  * (collision geometry other than box, sphere, cylinder, mesh),
  * OPX_ERROR_INVALID_ARGUMENT (NULLs, bad options); *out is NULL on failure.
- * urdfdom prints its own reasons for rejecting a URDF on stderr.
+ * Limits, checked before any XML parser reads the text: URDF and SRDF text
+ * is valid UTF-8 without NUL bytes; elements nest at most 100 deep; the
+ * links form one tree (no cycle, one parent each, one root) at most 1,000
+ * joints deep; lengths, angles, axes, scales and mimic factors are finite
+ * numbers within +-1e6.  The library writes nothing to stderr.
  */
 OPX_API opx_status opx_linkset_load_urdf_file(const char *path, const opx_urdf_options *options,
                                               opx_linkset **out);
