@@ -13,6 +13,7 @@
 #include <array>
 #include <atomic>
 #include <mutex>
+#include <utility>
 #include <cstdint>
 #include <vector>
 
@@ -47,8 +48,8 @@ struct LazyPlacement {
     std::atomic<bool> done{false};
     std::mutex lock;
     LazyPlacement() = default;
-    LazyPlacement(const LazyPlacement &) {}
-    LazyPlacement &operator=(const LazyPlacement &) {
+    LazyPlacement(const LazyPlacement &) noexcept {}
+    LazyPlacement &operator=(const LazyPlacement &) noexcept {
         done.store(false);
         return *this;
     }
@@ -57,7 +58,7 @@ struct LazyPlacement {
 // The fields the distance search's lower bounds read (kind, inflation,
 // core) come first: it prefetches a shape's first 160 bytes
 // (direct_distance.cpp); keep them there.
-struct PlacedShape {
+struct PlacedShapeFields {
     uint32_t link = 0, shape = 0;
     ShapeKind kind = ShapeKind::kSphere;
     double inflation = 0.0;  // radius of the ball added to the core
@@ -74,6 +75,25 @@ struct PlacedShape {
     mutable LazyPlacement mesh_placement;
     mutable Aabb mesh_vertex_box;                      // mesh: of the placed vertices, by place_mesh()
     const ShapeDef *def = nullptr;
+};
+
+// A convex hull's core points into the shape's own world_vertices, so a
+// copy or a move (a vector of shapes growing) points its core at its own
+// vertices, never at the ones it was made from.
+struct PlacedShape : PlacedShapeFields {
+    PlacedShape() = default;
+    PlacedShape(const PlacedShape &other) : PlacedShapeFields(other) { own_hull(); }
+    PlacedShape(PlacedShape &&other) noexcept : PlacedShapeFields(std::move(other)) { own_hull(); }
+    PlacedShape &operator=(const PlacedShape &other) {
+        PlacedShapeFields::operator=(other);
+        own_hull();
+        return *this;
+    }
+    PlacedShape &operator=(PlacedShape &&other) noexcept {
+        PlacedShapeFields::operator=(std::move(other));
+        own_hull();
+        return *this;
+    }
 
     // Mesh: places the vertices and refits the triangle tree at the current
     // pose unless done already.  Call it before reading world_vertices,
@@ -87,6 +107,11 @@ struct PlacedShape {
     // The same triangle placed from the shape-frame vertices, bit for bit
     // as place_mesh() places them; needs no placement.
     Convex posed_triangle(int32_t index) const;
+
+private:
+    void own_hull() {
+        if (kind == ShapeKind::kConvex) core.hull = world_vertices.data();
+    }
 };
 
 // Places `def` at link pose `link_pose` with `padding`; enabled=false

@@ -180,6 +180,33 @@ static void sphere_to_a_cell_by_hand(void **state) {
     opx_octree_destroy(tree);
 }
 
+/* A convex shape keeps reading its own vertices when shapes added after it
+ * (here to an earlier link, then to its own) move it in the link set's
+ * storage; under ASan a stale vertex pointer is a use after free. */
+static void convex_shape_survives_later_shapes(void **state) {
+    (void)state;
+    opx_octree *tree = new_one_cell_map();
+    opx_linkset *links = new_linkset();
+    assert_int_equal(add_link(links, "a"), 0);
+    assert_int_equal(add_link(links, "b"), 1);
+    assert_int_equal(add_shape(links, 1, convex_shape(TETRA, 4, 0)), 0);
+    for (int i = 0; i < 8; ++i) add_shape(links, 0, sphere_shape(0.01));
+    opx_shape far_ball = sphere_shape(0.01);
+    far_ball.pose.position[0] = 1.0; /* link frame: well beyond the tetrahedron */
+    assert_int_equal(add_shape(links, 1, far_ball), 1);
+    opx_pose poses[2] = {pose_at(5.0, 5.0, 5.0), pose_at(0.55, C0, C0)};
+    assert_ok(opx_linkset_set_poses(links, poses, 2, 0));
+    opx_query *query = new_query();
+    const opx_distance_result d = distance_with(query, tree, links, NULL);
+    /* The tetrahedron's nearest vertex is its origin, 0.3 from the cell's face x = 0.25. */
+    assert_int_equal(d.link, 1);
+    assert_int_equal(d.shape, 0);
+    assert_near(d.distance, 0.3, 1e-9);
+    opx_query_destroy(query);
+    opx_linkset_destroy(links);
+    opx_octree_destroy(tree);
+}
+
 /* Farther than the cutoff: found 0 and distance = cutoff. */
 static void cutoff(void **state) {
     (void)state;
@@ -301,6 +328,7 @@ int main(void) {
         cmocka_unit_test(empty_map),
         cmocka_unit_test(per_link_distances),
         cmocka_unit_test(signed_distance),
+        cmocka_unit_test(convex_shape_survives_later_shapes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
