@@ -140,7 +140,8 @@ OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joi
  * (and refits the link set like opx_linkset_set_poses).  `positions` has
  * `count` = joint count values in model order; values of fixed, floating
  * and planar joints are ignored; a mimic joint takes multiplier * master +
- * offset and its own value is ignored.  All values must be finite.
+ * offset and its own value is ignored.  All values must be finite and
+ * within +-1e6 (rad or m).
  * base_pose: the root link in the map frame (NULL: identity).  Links added
  * with opx_linkset_add_link after loading keep their pose.  On error
  * nothing changes.

@@ -33,6 +33,18 @@ UrdfInput read_options(const opx_urdf_options *in, const std::string &default_ba
 
 std::string read_text_file(const char *path) { return read_file_bytes(path, "path"); }
 
+// Joint positions beyond this (radians or metres) are refused: a mimic
+// joint scales its master's value by up to 1e12, and the poses must stay
+// far from overflow in every distance computation.
+constexpr double kMaxJointPosition = 1e6;
+
+bool joint_position_in_range(double value) { return std::fabs(value) <= kMaxJointPosition; }  // false for NaN
+
+[[noreturn]] void reject_joint_position(double value, const char *argument) {
+    throw_invalid(format("%s is %g; a joint position is a finite number within +-%g (rad or m)", argument, value,
+                         kMaxJointPosition));
+}
+
 opx_status load(UrdfInput input, opx_linkset **out) {
     auto handle = std::make_unique<opx_linkset>();
     load_urdf(input, handle->links, handle->robot);
@@ -153,7 +165,8 @@ OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const dou
             throw_invalid(format("count %zu differs from the number of joints, %zu", count, joints.joint_count()));
         if (count > 0) require_pointer(positions, "positions");
         for (size_t i = 0; i < count; ++i)  // the name is formatted only for a bad value
-            if (!std::isfinite(positions[i])) require_finite(positions[i], format("positions[%zu]", i).c_str());
+            if (!joint_position_in_range(positions[i]))
+                reject_joint_position(positions[i], format("positions[%zu]", i).c_str());
         const Pose base = read_base_pose(base_pose);
         joints.set_commanded(positions);
         joints.update_positions();
@@ -172,8 +185,8 @@ OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links, con
             if (names[i] == nullptr) throw_invalid(format("names[%zu] is NULL", i));
             if (joints.find(names[i]) == kNoIndex)
                 throw_invalid(format("names[%zu] \"%.80s\": no joint has this name", i, names[i]));
-            if (!std::isfinite(positions[i]))
-                require_finite(positions[i], format("positions[%zu] (joint \"%.80s\")", i, names[i]).c_str());
+            if (!joint_position_in_range(positions[i]))
+                reject_joint_position(positions[i], format("positions[%zu] (joint \"%.80s\")", i, names[i]).c_str());
         }
         const Pose base = read_base_pose(base_pose);
         for (size_t i = 0; i < count; ++i) joints.set_commanded(joints.find(names[i]), positions[i]);

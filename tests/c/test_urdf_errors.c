@@ -180,8 +180,8 @@ static void fk_rejects_bad_arguments_and_changes_nothing(void **state) {
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "count 6", opx_linkset_set_joint_positions(robot, q, 6, NULL));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "positions",
                    opx_linkset_set_joint_positions(robot, NULL, TEST_JOINTS, NULL));
-    static const double bad_values[3] = {NAN, INFINITY, -INFINITY};
-    for (int i = 0; i < 3; ++i) {
+    static const double bad_values[5] = {NAN, INFINITY, -INFINITY, 1.5e6, -1e300};
+    for (int i = 0; i < 5; ++i) {
         double bad[TEST_JOINTS] = {0.9, 0.2, -1.0, 0.0, 0.0};
         bad[4] = bad_values[i]; /* even an ignored (fixed) slot */
         expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "positions[4]",
