@@ -12,6 +12,14 @@ void require_ok(opx_status status, const char *what) {
     std::exit(1);
 }
 
+opx_query *new_query(int32_t engine) {
+    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
+    options.engine = engine;
+    opx_query *query = nullptr;
+    require_ok(opx_query_create(&options, &query), "opx_query_create");
+    return query;
+}
+
 double Lcg::uniform(double lo, double hi) {
     state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
     const double unit = static_cast<double>(state_ >> 11) * (1.0 / 9007199254740992.0);

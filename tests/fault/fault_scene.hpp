@@ -16,6 +16,9 @@ namespace fault {
 // under a failing allocator).
 void require_ok(opx_status status, const char *what);
 
+// A new query context with `engine`.
+opx_query *new_query(int32_t engine);
+
 // A small pseudo-random generator whose sequence is fixed on every platform.
 class Lcg {
 public:

@@ -46,14 +46,6 @@ const std::vector<double> &shared_boxes() {
     return boxes;
 }
 
-opx_query *new_query(int32_t engine) {
-    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
-    options.engine = engine;
-    opx_query *query = nullptr;
-    require_ok(opx_query_create(&options, &query), "opx_query_create");
-    return query;
-}
-
 void bind_shared_boxes(opx_query *query) {
     const std::vector<double> &boxes = shared_boxes();
     require_ok(opx_query_bind_boxes(query, boxes.data(), boxes.size() / 6, 0), "opx_query_bind_boxes");

@@ -88,14 +88,6 @@ std::unique_ptr<SharedScene> make_scene(const opx_octree *tree, const Settings &
     return scene;
 }
 
-opx_query *new_query(int32_t engine) {
-    opx_query_options options = OPX_QUERY_OPTIONS_INIT;
-    options.engine = engine;
-    opx_query *query = nullptr;
-    require_ok(opx_query_create(&options, &query), "opx_query_create");
-    return query;
-}
-
 void run_query(Record &record, QueryKind kind, opx_query *query, const QueryInputs &in) {
     QueryOutputs out;
     const opx_status status = call_query(kind, query, in, out);

@@ -2,6 +2,7 @@
 #define _GNU_SOURCE /* mkstemps */
 #include "fuzz_file.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,4 +40,11 @@ const char *fuzz_scratch_file(const char *suffix, const uint8_t *data, size_t si
         done += (size_t)written;
     }
     return scratch_path;
+}
+
+size_t fuzz_count_finite(const float *xyz, size_t count) {
+    size_t finite = 0;
+    for (size_t i = 0; i < count; ++i)
+        finite += isfinite(xyz[3 * i]) && isfinite(xyz[3 * i + 1]) && isfinite(xyz[3 * i + 2]);
+    return finite;
 }

@@ -12,4 +12,8 @@
  * `suffix` (the same every call), and returns its path. */
 const char *fuzz_scratch_file(const char *suffix, const uint8_t *data, size_t size);
 
+/* How many of `count` xyz float triples are finite: what a reader's
+ * finite_count must say. */
+size_t fuzz_count_finite(const float *xyz, size_t count);
+
 #endif /* OPX_FUZZ_FILE_H */

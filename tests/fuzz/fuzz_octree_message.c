@@ -22,12 +22,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     opx_octree *tree = (opx_octree *)&tree; /* must be reset to NULL on failure */
     const opx_status status = FUZZ_CALL(opx_octree_load_message, in.data, in.size, flags & 1, resolution,
                                         (flags & 2) ? &options : NULL, &tree);
-    if (status != OPX_OK) {
-        FUZZ_REQUIRE(tree == NULL);
-        return 0;
-    }
-    FUZZ_REQUIRE(tree != NULL);
-    fuzz_exercise_tree(tree);
-    opx_octree_destroy(tree);
+    fuzz_check_loaded(status, tree);
     return 0;
 }

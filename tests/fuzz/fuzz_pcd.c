@@ -9,16 +9,8 @@
 
 #include "pcd_reader.h"
 
-#include <math.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-static size_t count_finite(const float *xyz, size_t count) {
-    size_t finite = 0;
-    for (size_t i = 0; i < count; ++i)
-        finite += isfinite(xyz[3 * i]) && isfinite(xyz[3 * i + 1]) && isfinite(xyz[3 * i + 2]);
-    return finite;
-}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     const char *path = fuzz_scratch_file(".pcd", data, size);
@@ -31,7 +23,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     }
     FUZZ_REQUIRE(cloud.count == (size_t)cloud.width * cloud.height);
     FUZZ_REQUIRE(cloud.count == 0 || cloud.xyz != NULL);
-    FUZZ_REQUIRE(cloud.finite_count == count_finite(cloud.xyz, cloud.count));
+    FUZZ_REQUIRE(cloud.finite_count == fuzz_count_finite(cloud.xyz, cloud.count));
     pcd_free(&cloud);
     return 0;
 }

@@ -9,16 +9,8 @@
 
 #include "ply_reader.h"
 
-#include <math.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-static size_t count_finite(const float *xyz, size_t count) {
-    size_t finite = 0;
-    for (size_t i = 0; i < count; ++i)
-        finite += isfinite(xyz[3 * i]) && isfinite(xyz[3 * i + 1]) && isfinite(xyz[3 * i + 2]);
-    return finite;
-}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     const char *path = fuzz_scratch_file(".ply", data, size);
@@ -30,7 +22,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         return 0;
     }
     FUZZ_REQUIRE(cloud.count == 0 || cloud.xyz != NULL);
-    FUZZ_REQUIRE(cloud.finite_count == count_finite(cloud.xyz, cloud.count));
+    FUZZ_REQUIRE(cloud.finite_count == fuzz_count_finite(cloud.xyz, cloud.count));
     ply_free(&cloud);
     return 0;
 }

@@ -136,3 +136,13 @@ void fuzz_query_sphere(const opx_octree *tree, const double center[3], double ra
         FUZZ_REQUIRE(same_distance(distance[0].distance, distance[1].distance));
     }
 }
+
+void fuzz_check_loaded(opx_status status, opx_octree *tree) {
+    if (status != OPX_OK) {
+        FUZZ_REQUIRE(tree == NULL);
+        return;
+    }
+    FUZZ_REQUIRE(tree != NULL);
+    fuzz_exercise_tree(tree);
+    opx_octree_destroy(tree);
+}

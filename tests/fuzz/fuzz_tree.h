@@ -10,6 +10,10 @@
 
 #include <octoprox/octoprox.h>
 
+/* After a load that gave `status` and `tree`: a failure must hand out no
+ * tree (NULL); a loaded tree is exercised, then destroyed. */
+void fuzz_check_loaded(opx_status status, opx_octree *tree);
+
 /* Runs the reads and checks on tree (which stays unchanged). */
 void fuzz_exercise_tree(const opx_octree *tree);
 
