@@ -12,6 +12,8 @@
 #include <cstring>
 #include <fstream>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace octoprox {
 namespace {
@@ -23,8 +25,11 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4 &m) {
 }
 
 // Appends the triangles of one assimp mesh, its vertices taken to the
-// file's root frame by `transform`.
-void append_mesh(const aiMesh &mesh, const Eigen::Matrix4d &transform, TriangleMesh &out) {
+// file's root frame by `transform`.  Indices are checked: a hostile file
+// must not make a triangle point outside its mesh.
+void append_mesh(const aiMesh &mesh, const Eigen::Matrix4d &transform, const std::string &path, TriangleMesh &out) {
+    if (out.vertices.size() + mesh.mNumVertices > UINT32_MAX)
+        throw_corrupt("mesh file '" + path + "' has more than 2^32 vertices");
     const uint32_t first = static_cast<uint32_t>(out.vertices.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
         const aiVector3D &p = mesh.mVertices[v];
@@ -33,14 +38,30 @@ void append_mesh(const aiMesh &mesh, const Eigen::Matrix4d &transform, TriangleM
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace &face = mesh.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines are no surface
+        for (unsigned k = 0; k < 3; ++k)
+            if (face.mIndices[k] >= mesh.mNumVertices)
+                throw_corrupt("mesh file '" + path + "' has a face whose vertex index is out of range");
         out.triangles.push_back({first + face.mIndices[0], first + face.mIndices[1], first + face.mIndices[2]});
     }
 }
 
-void append_node(const aiScene &scene, const aiNode &node, const Eigen::Matrix4d &parent, TriangleMesh &out) {
-    const Eigen::Matrix4d transform = parent * to_eigen(node.mTransformation);
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) append_mesh(*scene.mMeshes[node.mMeshes[i]], transform, out);
-    for (unsigned i = 0; i < node.mNumChildren; ++i) append_node(scene, *node.mChildren[i], transform, out);
+// Every mesh of the node tree in its node's frame, in depth-first order
+// (a node's meshes, then its children's).  Iterative: a file may
+// nest nodes deeper than a thread's stack would take.
+void append_nodes(const aiScene &scene, const std::string &path, TriangleMesh &out) {
+    std::vector<std::pair<const aiNode *, Eigen::Matrix4d>> pending{{scene.mRootNode, Eigen::Matrix4d::Identity()}};
+    while (!pending.empty()) {
+        const aiNode &node = *pending.back().first;
+        const Eigen::Matrix4d transform = pending.back().second * to_eigen(node.mTransformation);
+        pending.pop_back();
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes[i] >= scene.mNumMeshes)
+                throw_corrupt("mesh file '" + path + "' has a node naming a mesh that does not exist");
+            append_mesh(*scene.mMeshes[node.mMeshes[i]], transform, path, out);
+        }
+        // Reversed onto the stack: the children come out in the file's order.
+        for (unsigned i = node.mNumChildren; i-- > 0;) pending.emplace_back(node.mChildren[i], transform);
+    }
 }
 
 // The bits of a vertex: equal positions weld, whatever their normals or
@@ -98,7 +119,7 @@ TriangleMesh load_mesh_file(const std::string &path) {
     if (scene == nullptr || scene->mRootNode == nullptr)
         throw_corrupt("mesh file '" + path + "' cannot be imported: " + importer.GetErrorString());
     TriangleMesh mesh;
-    append_node(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), mesh);
+    append_nodes(*scene, path, mesh);
     if (mesh.triangles.empty()) throw_corrupt("mesh file '" + path + "' has no triangles");
     keep_used_vertices(mesh, path);
     return mesh;
