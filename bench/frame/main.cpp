@@ -1,4 +1,4 @@
-// opx-frame-bench: the per-frame budget of issue 7.  For a stream of
+// opx-frame-bench: the per-frame budget.  For a stream of
 // frames (the real RGB-D frame with small sensor motions, and the
 // generated room at 307,200 points), at 5, 2 and 1 cm: ingest (ray-cast
 // and endpoints), then 1,000 PR2 collision queries at random reachable

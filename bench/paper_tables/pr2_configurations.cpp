@@ -18,8 +18,9 @@ const char *const kJointNames[kArmJoints] = {
     "r_forearm_roll_joint", "r_wrist_flex_joint",    "r_wrist_roll_joint",     "l_shoulder_pan_joint",
     "l_shoulder_lift_joint", "l_upper_arm_roll_joint", "l_elbow_flex_joint",   "l_forearm_roll_joint",
     "l_wrist_flex_joint",    "l_wrist_roll_joint"};
-// Both arms stretched forward (the right one as opx-demo --real's goal, the
-// left one its mirror image), reaching over the sensed surface.
+// Both arms stretched forward (the right one in the reaching pose of
+// opx-demo --real, the left one its mirror image), reaching over the
+// sensed surface.
 const double kReach[kArmJoints] = {-0.1, 0.1, 0.0, -0.35, 0.0, -0.4, 0.0, 0.1, 0.1, 0.0, -0.35, 0.0, -0.4, 0.0};
 constexpr double kSpread = 0.5;             // rad: each joint uniform in reach +- this
 constexpr double kMinPenetration = 0.01;    // m: collision set window (lift depth)

@@ -89,15 +89,6 @@ void print_ratios(const std::vector<Measurement> &measurements) {
     }
 }
 
-// The goal: in scene F, octoprox at most 1/10 of FCL octree's T_q and no
-// more than FCL boxes' T_q.
-void print_goal(const std::vector<Measurement> &measurements) {
-    const double boxes = measurements[0].row.tq_ms, octree = measurements[1].row.tq_ms;
-    const double direct = measurements[2].row.tq_ms;
-    std::cout << "goal: octoprox T_q <= FCL octree T_q / 10: " << yes_no(direct <= octree / 10.0)
-              << "; octoprox T_q <= FCL boxes T_q: " << yes_no(direct <= boxes) << "\n";
-}
-
 std::string table_title(const RowContext &context, const BenchOptions &options) {
     const bool primitives = context.variant == Variant::kPrimitives;
     const bool free_scene = std::string(context.scene) == "F";
@@ -124,7 +115,6 @@ int run_variant(const Scenes &scenes, Variant variant, const BenchOptions &optio
         for (const Measurement &m : measurements) table.push_back(m.row);
         print_table(std::cout, table_title(context, options), table);
         print_ratios(measurements);
-        if (free_scene) print_goal(measurements);
         if (!answers_agree(measurements, free_scene)) status = 1;
         rows.insert(rows.end(), table.begin(), table.end());
     }
