@@ -16,19 +16,30 @@ constexpr size_t kLargestSlabBytes = size_t{64} << 10;
 
 ChildBlockPool::~ChildBlockPool() {
     for (void *slab : slabs_) ::operator delete(slab, std::align_val_t{kAlignment});
+    release_spares();
+}
+
+size_t ChildBlockPool::next_slab_bytes() const {
+    const size_t bytes = slabs_.empty() && spares_.empty() ? kFirstSlabBytes : std::min(2 * reserved_, kLargestSlabBytes);
+    return bytes / kBlockBytes * kBlockBytes;
 }
 
 void ChildBlockPool::add_slab() {
     // The newest slab's unused blocks go on the free list, not to waste.
     for (; next_ != end_; next_ += kBlockBytes) push_free(next_);
-    const size_t bytes = slabs_.empty() ? kFirstSlabBytes : std::min(2 * reserved_, kLargestSlabBytes);
-    const size_t usable = bytes / kBlockBytes * kBlockBytes;
     slabs_.reserve(slabs_.size() + 1);  // no leak if the vector cannot grow
-    void *slab = ::operator new(usable, std::align_val_t{kAlignment});
-    slabs_.push_back(slab);
-    reserved_ += usable;
-    next_ = static_cast<char *>(slab);
-    end_ = next_ + usable;
+    Slab slab;
+    if (!spares_.empty()) {
+        slab = spares_.front();  // the smallest: the larger ones may go back unused
+        spares_.erase(spares_.begin());
+    } else {
+        slab.bytes = next_slab_bytes();
+        slab.memory = ::operator new(slab.bytes, std::align_val_t{kAlignment});
+        reserved_ += slab.bytes;
+    }
+    slabs_.push_back(slab.memory);
+    next_ = static_cast<char *>(slab.memory);
+    end_ = next_ + slab.bytes;
 }
 
 void *ChildBlockPool::allocate() {
@@ -58,11 +69,42 @@ void ChildBlockPool::push_free(void *block) {
 }
 
 size_t ChildBlockPool::blocks_available() const {
-    return free_count_ + static_cast<size_t>(end_ - next_) / kBlockBytes;
+    size_t spare_blocks = 0;
+    for (const Slab &slab : spares_) spare_blocks += slab.bytes / kBlockBytes;
+    return free_count_ + static_cast<size_t>(end_ - next_) / kBlockBytes + spare_blocks;
 }
 
+// Spare slabs are carved only when the free list and the current slab are
+// used up, so the ones an update did not need can go back to the heap whole.
 void ChildBlockPool::reserve(size_t blocks) {
-    while (blocks_available() < blocks) add_slab();
+    try {
+        reserve_spares(blocks);
+    } catch (...) {
+        release_spares();  // a reserve that fails holds no more memory than before
+        throw;
+    }
+}
+
+void ChildBlockPool::reserve_spares(size_t blocks) {
+    size_t available = blocks_available();
+    while (available < blocks) {
+        Slab slab;
+        slab.bytes = next_slab_bytes();
+        spares_.reserve(spares_.size() + 1);  // no leak if the vector cannot grow
+        slab.memory = ::operator new(slab.bytes, std::align_val_t{kAlignment});
+        spares_.push_back(slab);
+        reserved_ += slab.bytes;
+        available += slab.bytes / kBlockBytes;
+    }
+    slabs_.reserve(slabs_.size() + spares_.size());  // taking a spare allocates nothing
+}
+
+void ChildBlockPool::release_spares() {
+    for (const Slab &slab : spares_) {
+        ::operator delete(slab.memory, std::align_val_t{kAlignment});
+        reserved_ -= slab.bytes;
+    }
+    spares_.clear();
 }
 
 }  // namespace octoprox

@@ -33,6 +33,8 @@ public:
     // Makes the next `blocks` allocate() calls take no memory from the heap
     // (they cannot throw); throws std::bad_alloc if the slabs cannot grow.
     void reserve(size_t blocks);
+    // Gives the reserved slabs no allocation has reached back to the heap.
+    void release_spares();
 
     size_t blocks_in_use() const { return in_use_; }
     // The most blocks in use at once since the last reset: what an update
@@ -42,11 +44,18 @@ public:
     size_t bytes_reserved() const { return reserved_; }  // all slabs
 
 private:
+    struct Slab {
+        void *memory = nullptr;
+        size_t bytes = 0;
+    };
     void add_slab();
+    size_t next_slab_bytes() const;
+    void reserve_spares(size_t blocks);
     void push_free(void *block);
     size_t blocks_available() const;
 
     std::vector<void *> slabs_;
+    std::vector<Slab> spares_;  // reserved, not yet carved
     void *free_ = nullptr;  // released blocks, linked through their first word
     char *next_ = nullptr;  // the unused rest of the newest slab
     char *end_ = nullptr;

@@ -73,6 +73,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     const BoundsScope scope(occupied_log_odds_);
     for (const auto &key : free_cells) tree_->updateNode(key, false, false);
     for (const auto &key : occupied_cells) tree_->updateNode(key, true, false);
+    tree_->child_blocks().release_spares();
     grow_known_bounds(free_cells);
     grow_known_bounds(occupied_cells);
     counts.cells_missed = free_cells.size();

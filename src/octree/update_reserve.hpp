@@ -20,6 +20,9 @@ size_t child_blocks_needed(const BoundedOcTree &tree, const octomap::KeySet &fir
 
 // Makes sure the tree's pool can hand out that many blocks without a heap
 // allocation; throws std::bad_alloc, changing nothing in the map, if not.
+// After the update, the tree's pool gives back what was reserved and not
+// used (ChildBlockPool::release_spares): the count is an upper bound, as
+// blocks a prune frees are taken again by later cells.
 void reserve_update(BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second);
 
 }  // namespace octoprox
