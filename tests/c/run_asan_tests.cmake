@@ -5,22 +5,12 @@
 #         -P run_asan_tests.cmake
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var SOURCE_DIR BINARY_DIR GENERATOR C_COMPILER CXX_COMPILER CTEST_COMMAND TARGETS)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "run_asan_tests.cmake: ${var} is not set")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/second_tree_steps.cmake)
+opx_require_variables(run_asan_tests.cmake SOURCE_DIR BINARY_DIR GENERATOR C_COMPILER CXX_COMPILER CTEST_COMMAND TARGETS)
 
-function(run_step description)
-  message(STATUS "asan_c_tests: ${description}")
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE result)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "asan_c_tests: ${description} failed (${result})")
-  endif()
-endfunction()
 
 file(MAKE_DIRECTORY ${BINARY_DIR})
-run_step("configure ${BINARY_DIR}"
+run_step(asan_c_tests "configure ${BINARY_DIR}"
   ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=Debug
     -DCMAKE_C_COMPILER=${C_COMPILER}
@@ -30,11 +20,11 @@ run_step("configure ${BINARY_DIR}"
     -DOPX_BUILD_EXAMPLES=OFF)
 
 string(REPLACE "," ";" targets "${TARGETS}")
-run_step("build ${TARGETS}" ${CMAKE_COMMAND} --build ${BINARY_DIR} -j2 --target ${targets})
+run_step(asan_c_tests "build ${TARGETS}" ${CMAKE_COMMAND} --build ${BINARY_DIR} -j2 --target ${targets})
 
 # detect_leaks: LeakSanitizer is on by default on Linux; say so explicitly.
 # UBSan reports must fail the test, not only print.
 set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0:strict_string_checks=1")
 set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1")
-run_step("ctest -R ^c_"
+run_step(asan_c_tests "ctest -R ^c_"
   ${CTEST_COMMAND} -R "^c_" --output-on-failure --timeout 600)

@@ -8,24 +8,14 @@
 # flags go on the command line: no option of the project is needed.
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var SOURCE_DIR BINARY_DIR GENERATOR C_COMPILER CXX_COMPILER)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "run_tsan_threads.cmake: ${var} is not set")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/second_tree_steps.cmake)
+opx_require_variables(run_tsan_threads.cmake SOURCE_DIR BINARY_DIR GENERATOR C_COMPILER CXX_COMPILER)
 
-function(run_step description)
-  message(STATUS "tsan_threads: ${description}")
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE result)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "tsan_threads: ${description} failed (${result})")
-  endif()
-endfunction()
 
 set(tsan_flags "-fsanitize=thread -fno-omit-frame-pointer")
 file(MAKE_DIRECTORY ${BINARY_DIR})
 # OPX_FAULT_TSAN_TREE keeps that tree from adding this test again.
-run_step("configure ${BINARY_DIR}"
+run_step(tsan_threads "configure ${BINARY_DIR}"
   ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=RelWithDebInfo
     -DCMAKE_C_COMPILER=${C_COMPILER}
@@ -38,10 +28,10 @@ run_step("configure ${BINARY_DIR}"
     -DOPX_BUILD_BENCH=OFF
     -DOPX_BUILD_EXAMPLES=OFF)
 
-run_step("build fault_threads" ${CMAKE_COMMAND} --build ${BINARY_DIR} -j2 --target fault_threads)
+run_step(tsan_threads "build fault_threads" ${CMAKE_COMMAND} --build ${BINARY_DIR} -j2 --target fault_threads)
 
 # A race report makes the run fail (TSan's exit code 66), after all of them
 # are printed.
 set(ENV{TSAN_OPTIONS} "second_deadlock_stack=1")
-run_step("fault_threads"
+run_step(tsan_threads "fault_threads"
   ${BINARY_DIR}/tests/fault/fault_threads --poses 24)
