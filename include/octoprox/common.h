@@ -89,9 +89,10 @@ typedef struct opx_pose {
 } opx_pose;
 #define OPX_POSE_IDENTITY {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 1.0}}
 
-/* Scalar types of point arrays. */
+/* Scalar types of point arrays and depth images. */
 #define OPX_SCALAR_FLOAT32 1
 #define OPX_SCALAR_FLOAT64 2
+#define OPX_SCALAR_UINT16 3 /* depth images only */
 
 #ifdef __cplusplus
 }

@@ -81,19 +81,29 @@ typedef struct opx_insert_options {
     uint32_t struct_size;
     int32_t mode;         /* OPX_INSERT_RAYCAST (default) or OPX_INSERT_ENDPOINTS */
     opx_pose sensor_pose; /* the sensor frame in the map frame; identity */
-    /* Points farther than this from the sensor origin (metres) are skipped
-     * and counted.  Unlike OctoMap, which clears free space along a
-     * truncated ray, a skipped point changes nothing.  <= 0 or +infinity: no
-     * limit (the default, -1, OctoMap's "no limit" value); NaN is invalid. */
+    /* Points farther than this from the sensor origin (metres) are counted
+     * as out of range and, as in OctoMap, give no occupied cell: in
+     * ray-cast mode the ray is cut at max_range and its cells become more
+     * free; in endpoint mode the point changes nothing.  <= 0 or +infinity:
+     * no limit (the default, -1, OctoMap's "no limit" value); NaN is
+     * invalid. */
     double max_range;
+    /* Threads a ray-cast insert may use, the caller's included: 1 (the
+     * default) keeps all work on the caller's thread and starts none, as
+     * firmware with its own scheduling expects; 0 means one per hardware
+     * thread, the choice on a workstation.  The map after an insert does
+     * not depend on it. */
+    uint32_t max_threads;
+    uint32_t reserved0;
 } opx_insert_options;
 
 #define OPX_INSERT_OPTIONS_INIT \
-    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0}
+    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u}
 OPX_API opx_status opx_insert_options_init(opx_insert_options *options, size_t size);
 
-/* What one insert did.  Every point is counted once: used + nonfinite +
- * out_of_range + outside_map == count. */
+/* What one insert did.  Every point (every pixel of a depth image) is
+ * counted once: used + nonfinite + out_of_range + outside_map +
+ * pixels_no_return == count (width * height for a depth image). */
 typedef struct opx_insert_report {
     uint32_t struct_size;
     uint32_t reserved0;
@@ -103,9 +113,12 @@ typedef struct opx_insert_report {
     uint64_t points_outside_map;  /* outside the octree's addressable cube */
     uint64_t cells_hit;           /* cells updated as occupied */
     uint64_t cells_missed;        /* cells updated as free */
+    /* Depth images: pixels without a depth (0; for float32 also NaN,
+     * infinite or negative), skipped.  0 for opx_octree_insert_points. */
+    uint64_t pixels_no_return;
 } opx_insert_report;
 
-#define OPX_INSERT_REPORT_INIT {sizeof(opx_insert_report), 0, 0, 0, 0, 0, 0, 0}
+#define OPX_INSERT_REPORT_INIT {sizeof(opx_insert_report), 0, 0, 0, 0, 0, 0, 0, 0}
 OPX_API opx_status opx_insert_report_init(opx_insert_report *report, size_t size);
 
 /*
@@ -122,6 +135,76 @@ OPX_API opx_status opx_octree_insert_points(opx_octree *tree, const void *points
                                             size_t stride, int32_t scalar_type,
                                             const opx_insert_options *options,
                                             opx_insert_report *out_report);
+
+/*
+ * An organized depth frame, row after row, each row `width` pixels from
+ * left to right.  The library reads it during the call only.
+ *   OPX_SCALAR_UINT16: depth in units of 1/depth_scale metres (depth_scale
+ *     is units per metre: 1000 for millimetres, as OpenNI and most ROS
+ *     16UC1 images; 5000 for TUM RGB-D PNGs); 0 means no return.
+ *   OPX_SCALAR_FLOAT32: depth in metres (ROS 32FC1); 0, NaN, infinite and
+ *     negative values mean no return; depth_scale is not read.
+ * Depth is the distance along the optical axis (z), not along the ray.
+ * Pixels are native-endian and need not be aligned.
+ */
+typedef struct opx_depth_image {
+    uint32_t struct_size;
+    int32_t scalar_type;  /* OPX_SCALAR_UINT16 (default) or OPX_SCALAR_FLOAT32 */
+    const void *data;     /* the first row; may be NULL when width or height is 0 */
+    size_t width;         /* pixels per row (columns) */
+    size_t height;        /* rows */
+    size_t row_stride;    /* bytes from a row to the next; 0: packed (width pixels) */
+    double depth_scale;   /* OPX_SCALAR_UINT16: units per metre; 1000 (millimetres) */
+} opx_depth_image;
+
+#define OPX_DEPTH_IMAGE_INIT \
+    {sizeof(opx_depth_image), OPX_SCALAR_UINT16, NULL, 0, 0, 0, 1000.0}
+OPX_API opx_status opx_depth_image_init(opx_depth_image *image, size_t size);
+
+/*
+ * A pinhole camera without distortion (a ROS CameraInfo's K: fx = K[0],
+ * cx = K[2], fy = K[4], cy = K[5]), in pixels.  fx and fy must be positive,
+ * cx and cy finite.  The defaults are all 0: set every field.
+ */
+typedef struct opx_camera_intrinsics {
+    uint32_t struct_size;
+    uint32_t reserved0;
+    double fx; /* horizontal focal length (x), pixels */
+    double fy; /* vertical focal length (y), pixels */
+    double cx; /* principal point: column (x), pixels */
+    double cy; /* principal point: row (y), pixels */
+} opx_camera_intrinsics;
+
+#define OPX_CAMERA_INTRINSICS_INIT {sizeof(opx_camera_intrinsics), 0, 0.0, 0.0, 0.0, 0.0}
+OPX_API opx_status opx_camera_intrinsics_init(opx_camera_intrinsics *intrinsics, size_t size);
+
+/*
+ * Inserts one depth frame, exactly as opx_octree_insert_points inserts the
+ * points it back-projects (same options, same report).
+ *
+ * The sensor frame is the camera's optical frame: z forward along the
+ * optical axis, x right, y down (a ROS camera's *_optical_frame, the frame
+ * of its PointCloud2 clouds).  The pixel in column u and row v (0-based,
+ * pixel centres at integer coordinates, as PCL and ROS depth_image_proc
+ * count) with depth z metres becomes the point
+ *     ((u - cx) * z / fx, (v - cy) * z / fy, z)
+ * in that frame, rounded to float32 (the call holds these points, 12 bytes
+ * a pixel, while it runs).  options->sensor_pose places the optical frame
+ * in the map frame; options->max_range is the distance from the camera's
+ * centre along the ray, not the depth.
+ *
+ * Pixels without a return are skipped and counted in pixels_no_return;
+ * every other pixel is counted as a point (a point too large for float32
+ * in points_nonfinite).  image and intrinsics must not be NULL; options
+ * may be NULL (defaults); out_report may be NULL.  An empty image (width
+ * or height 0) changes nothing.  `image->data` must hold `height` rows of
+ * `row_stride` bytes (the last one `width` pixels).  On an invalid
+ * argument the map is unchanged; on OPX_ERROR_OUT_OF_MEMORY too.
+ */
+OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_depth_image *image,
+                                                 const opx_camera_intrinsics *intrinsics,
+                                                 const opx_insert_options *options,
+                                                 opx_insert_report *out_report);
 
 /* ---- Reading the map --------------------------------------------------- */
 

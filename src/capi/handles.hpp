@@ -44,6 +44,10 @@ OctreeParams params_from_options(const opx_octree_options &options);
 opx_octree_options options_from_params(const OctreeParams &params);
 // Caller's options (NULL: defaults) read, versioned and validated.
 OctreeParams read_octree_options(const opx_octree_options *options, const char *argument);
+// Caller's insert options (NULL: defaults) read, versioned and validated.
+InsertSettings read_insert_options(const opx_insert_options *options);
+// The public form of an insert's counts (pixels_no_return 0).
+opx_insert_report report_from_counts(const InsertCounts &counts);
 // A collision request (already versioned) checked and turned into settings.
 CollisionSettings collision_settings(const opx_collision_request &request, const SensorOctree &tree);
 // The public form of a cost box.

@@ -52,6 +52,8 @@ PointSource read_point_source(const void *points, size_t count, size_t stride, i
     return source;
 }
 
+}  // namespace
+
 InsertSettings read_insert_options(const opx_insert_options *options) {
     opx_insert_options merged = OPX_INSERT_OPTIONS_INIT;
     read_versioned(options, merged, "options");
@@ -69,10 +71,9 @@ InsertSettings read_insert_options(const opx_insert_options *options) {
 
 opx_insert_report report_from_counts(const InsertCounts &c) {
     return opx_insert_report{sizeof(opx_insert_report), 0, c.used, c.nonfinite, c.out_of_range,
-                             c.outside_map, c.cells_hit, c.cells_missed};
+                             c.outside_map, c.cells_hit, c.cells_missed, 0};
 }
 
-}  // namespace
 }  // namespace octoprox::capi
 
 using namespace octoprox;

@@ -10,6 +10,8 @@ int opx_init_macros_compile(void) {
     const opx_octree_options octree_options = OPX_OCTREE_OPTIONS_INIT;
     const opx_insert_options insert_options = OPX_INSERT_OPTIONS_INIT;
     const opx_insert_report report = OPX_INSERT_REPORT_INIT;
+    const opx_depth_image image = OPX_DEPTH_IMAGE_INIT;
+    const opx_camera_intrinsics intrinsics = OPX_CAMERA_INTRINSICS_INIT;
     const opx_cell_info cell = OPX_CELL_INFO_INIT;
     const opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
     const opx_shape shape = OPX_SHAPE_INIT;
@@ -21,7 +23,8 @@ int opx_init_macros_compile(void) {
     const opx_joint_info joint_info = OPX_JOINT_INFO_INIT;
     return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
            insert_options.struct_size == sizeof insert_options &&
-           report.struct_size == sizeof report && cell.struct_size == sizeof cell &&
+           report.struct_size == sizeof report && image.struct_size == sizeof image &&
+           intrinsics.struct_size == sizeof intrinsics && cell.struct_size == sizeof cell &&
            stats.struct_size == sizeof stats && shape.struct_size == sizeof shape &&
            query_options.struct_size == sizeof query_options &&
            request.struct_size == sizeof request && result.struct_size == sizeof result &&

@@ -67,6 +67,8 @@ SIGNATURES = {
     "opx_octree_get_options": (status, [handle, P(s.OctreeOptions)]),
     "opx_octree_insert_points": (status, [handle, c_void_p, c_size_t, c_size_t, c_int32,
                                           P(s.InsertOptions), P(s.InsertReport)]),
+    "opx_octree_insert_depth_image": (status, [handle, P(s.DepthImage), P(s.CameraIntrinsics),
+                                               P(s.InsertOptions), P(s.InsertReport)]),
     "opx_octree_classify": (status, [handle, P(c_double), P(s.CellInfo)]),
     "opx_octree_get_stats": (status, [handle, P(s.OctreeStats)]),
     "opx_octree_get_leaves": (status, [handle, c_uint32, c_void_p, c_size_t, P(c_size_t)]),

@@ -40,14 +40,28 @@ class OctreeOptions(Struct):
 
 class InsertOptions(Struct):
     _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("sensor_pose", Pose),
-                ("max_range", c_double)]
+                ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32)]
 
 
 class InsertReport(Struct):
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
                 ("points_used", c_uint64), ("points_nonfinite", c_uint64),
                 ("points_out_of_range", c_uint64), ("points_outside_map", c_uint64),
-                ("cells_hit", c_uint64), ("cells_missed", c_uint64)]
+                ("cells_hit", c_uint64), ("cells_missed", c_uint64),
+                ("pixels_no_return", c_uint64)]
+
+
+class DepthImage(Struct):
+    _fields_ = [("struct_size", c_uint32), ("scalar_type", c_int32), ("data", c_void_p),
+                ("width", c_size_t), ("height", c_size_t), ("row_stride", c_size_t),
+                ("depth_scale", c_double)]
+
+
+class CameraIntrinsics(Struct):
+    """A pinhole camera in pixels: fx, fy (focal lengths), cx, cy
+    (principal point: column, row)."""
+    _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32), ("fx", c_double),
+                ("fy", c_double), ("cx", c_double), ("cy", c_double)]
 
 
 class CellInfo(Struct):
@@ -181,6 +195,8 @@ VERSIONED = {
     OctreeOptions: "opx_octree_options_init",
     InsertOptions: "opx_insert_options_init",
     InsertReport: "opx_insert_report_init",
+    DepthImage: "opx_depth_image_init",
+    CameraIntrinsics: "opx_camera_intrinsics_init",
     CellInfo: "opx_cell_info_init",
     OctreeStats: "opx_octree_stats_init",
     Shape: "opx_shape_init",

@@ -43,6 +43,8 @@ default_from_init! {
     opx_octree_options => opx_octree_options_init,
     opx_insert_options => opx_insert_options_init,
     opx_insert_report => opx_insert_report_init,
+    opx_depth_image => opx_depth_image_init,
+    opx_camera_intrinsics => opx_camera_intrinsics_init,
     opx_cell_info => opx_cell_info_init,
     opx_octree_stats => opx_octree_stats_init,
     opx_shape => opx_shape_init,
