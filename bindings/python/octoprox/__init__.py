@@ -15,10 +15,10 @@ from ._errors import (BufferTooSmallError, CorruptDataError, InternalError,
                       InvalidArgumentError, IoError, OctoproxError, OutOfMemoryError,
                       UnsupportedError, VersionError)
 from ._library import HEADER_VERSION, lib
-from ._structs import (CellInfo, CollisionRequest, CollisionResult, Contact, CostBox,
-                       DistanceRequest, DistanceResult, InsertOptions, InsertReport,
-                       JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest, PathResult,
-                       Pose, QueryOptions, QueryStats, UrdfOptions)
+from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionResult, Contact,
+                       CostBox, DepthImage, DistanceRequest, DistanceResult, InsertOptions,
+                       InsertReport, JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest,
+                       PathResult, Pose, QueryOptions, QueryStats, UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
@@ -51,7 +51,8 @@ __version__ = "%d.%d.%d" % HEADER_VERSION
 __all__ = [
     "Octree", "LinkSet", "Query", "version", "version_number", "status_name", "HEADER_VERSION", "lib",
     # results, requests and options (the C structs)
-    "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox", "DistanceRequest",
+    "CameraIntrinsics", "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox",
+    "DepthImage", "DistanceRequest",
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
     "OctreeStats", "PathRequest", "PathResult", "Pose", "QueryOptions", "QueryStats",
     "UrdfOptions",

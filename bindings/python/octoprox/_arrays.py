@@ -8,6 +8,12 @@ Points go to the library without a copy when they are
     point_step as itemsize: ``np.frombuffer(msg.data, dtype)``).
 Anything else (lists, other dtypes, byte-swapped or column-strided arrays)
 is converted once to a packed float64 (N, 3) array: the one documented copy.
+
+Depth images go in without a copy when they are a 2-D native uint16 or
+float32 array whose pixels are adjacent in a row and whose rows are at
+least a row apart (C-contiguous, or a view of rows and columns of a bigger
+image).  Other floating-point arrays are converted once to float32 metres,
+other layouts of uint16 once to packed uint16.
 """
 import ctypes
 
@@ -18,6 +24,7 @@ from ._errors import ERROR_INVALID_ARGUMENT, BufferTooSmallError, error_for
 
 SCALAR_FLOAT32 = 1
 SCALAR_FLOAT64 = 2
+SCALAR_UINT16 = 3
 _SCALARS = {np.dtype(np.float32): SCALAR_FLOAT32, np.dtype(np.float64): SCALAR_FLOAT64}
 
 # Result rows as numpy structured arrays, laid out exactly as the C structs.
@@ -88,6 +95,38 @@ def _packed_xyz(points, where):
         raise invalid(f"{where}: points must have shape (N, 3) or more columns, "
                       f"got {packed.shape}")
     return np.ascontiguousarray(packed[:, :3])
+
+
+class DepthView:
+    """A depth image as the library reads it: address, width, height, row
+    stride (bytes), scalar type; ``owner`` keeps the memory alive."""
+
+    def __init__(self, arr, scalar_type):
+        self.height, self.width = arr.shape
+        self.address, self.scalar_type, self.owner = arr.ctypes.data, scalar_type, arr
+        packed = self.width * arr.itemsize
+        self.row_stride = arr.strides[0] if self.height > 1 else packed
+
+
+def depth_view(depth, where):
+    """A 2-D depth image (rows, columns): uint16 or float32 in place, other
+    floating-point types as one float32 copy, anything else refused."""
+    arr = depth if isinstance(depth, np.ndarray) else np.asarray(depth)
+    if arr.ndim != 2:
+        raise invalid(f"{where}: a depth image has 2 dimensions (rows, columns), "
+                      f"got shape {arr.shape}")
+    if arr.dtype.kind == "u" and arr.dtype.itemsize == 2:
+        target, scalar = np.dtype(np.uint16), SCALAR_UINT16
+    elif arr.dtype.kind == "f":
+        target, scalar = np.dtype(np.float32), SCALAR_FLOAT32
+    else:
+        raise invalid(f"{where}: depth must be uint16 (with depth_scale) or floating-point "
+                      f"metres, got {arr.dtype}")
+    adjacent = arr.shape[1] < 2 or arr.strides[1] == arr.itemsize
+    rows_apart = arr.shape[0] < 2 or arr.strides[0] >= arr.shape[1] * arr.itemsize
+    if arr.dtype != target or not adjacent or not rows_apart:
+        arr = np.ascontiguousarray(arr, dtype=target)
+    return DepthView(arr, scalar)
 
 
 def pose_array(poses, where, ndim):

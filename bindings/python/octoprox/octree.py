@@ -4,7 +4,7 @@ import os
 
 
 from . import _structs as s
-from ._arrays import LEAF_DTYPE, needed_count, point_view, read_array
+from ._arrays import LEAF_DTYPE, depth_view, needed_count, point_view, read_array
 from ._handle import Handle
 from ._library import init_struct, lib
 
@@ -15,6 +15,16 @@ FORMAT_AUTO, FORMAT_BT, FORMAT_OT = 0, 1, 2
 
 def _path(path):
     return os.fsencode(path)
+
+
+def _camera(intrinsics):
+    """An initialised CameraIntrinsics from (fx, fy, cx, cy) or another one."""
+    if isinstance(intrinsics, s.CameraIntrinsics):
+        intrinsics = (intrinsics.fx, intrinsics.fy, intrinsics.cx, intrinsics.cy)
+    values = [float(v) for v in intrinsics]
+    if len(values) != 4:
+        raise ValueError(f"intrinsics are 4 numbers (fx, fy, cx, cy), got {len(values)}")
+    return init_struct(s.CameraIntrinsics, **dict(zip(("fx", "fy", "cx", "cy"), values)))
 
 
 class Octree(Handle):
@@ -72,7 +82,9 @@ class Octree(Handle):
         points: in the SENSOR frame; see octoprox._arrays for the layouts
         read in place.  sensor_pose: the sensor in the map frame, (x, y, z)
         or (x, y, z, qx, qy, qz, qw).  Other keywords: mode
-        (INSERT_RAYCAST or INSERT_ENDPOINTS), max_range.
+        (INSERT_RAYCAST or INSERT_ENDPOINTS), max_range (metres),
+        max_threads (1, the default: the caller's thread only; 0: one per
+        hardware thread).
         """
         if sensor_pose is not None:
             options["sensor_pose"] = sensor_pose
@@ -81,6 +93,38 @@ class Octree(Handle):
         report = init_struct(s.InsertReport)
         lib.opx_octree_insert_points(self, view.address, view.count, view.stride,
                                      view.scalar_type, opts, report)
+        return report
+
+    def insert_depth_image(self, depth, intrinsics, depth_scale=1000.0, sensor_pose=None,
+                           **options):
+        """Inserts one depth frame and returns its InsertReport.
+
+        depth: a 2-D array (rows, columns), read in place when it is uint16
+        or float32 with adjacent pixels in a row (C-contiguous, or a view of
+        rows and columns of a bigger array; see octoprox._arrays):
+          * uint16: units of 1/depth_scale metres (depth_scale 1000 for
+            millimetres, the default; 5000 for TUM RGB-D PNGs); 0 is no
+            return;
+          * float32 metres (other floating-point types: one float32 copy);
+            0, NaN, infinite and negative values are no return.
+        intrinsics: (fx, fy, cx, cy) in pixels, or a CameraIntrinsics.
+        The pixel in column u, row v with depth z becomes the point
+        ((u - cx) * z / fx, (v - cy) * z / fy, z) in the camera's optical
+        frame (z forward, x right, y down); sensor_pose places that frame
+        in the map frame, (x, y, z) or (x, y, z, qx, qy, qz, qw).  Other
+        keywords as insert_points: mode, max_range, max_threads.  Pixels
+        without a return are counted in the report's pixels_no_return.
+        """
+        if sensor_pose is not None:
+            options["sensor_pose"] = sensor_pose
+        opts = init_struct(s.InsertOptions, **options)
+        camera = _camera(intrinsics)
+        view = depth_view(depth, "Octree.insert_depth_image")
+        image = init_struct(s.DepthImage, data=view.address, width=view.width,
+                            height=view.height, row_stride=view.row_stride,
+                            scalar_type=view.scalar_type, depth_scale=depth_scale)
+        report = init_struct(s.InsertReport)
+        lib.opx_octree_insert_depth_image(self, image, camera, opts, report)
         return report
 
     def classify(self, point):
