@@ -2,7 +2,8 @@
 //! distance queries between robot links and occupancy octrees built from
 //! point-cloud sensor frames.
 //!
-//! * [`Octree`]: the map (insert sensor frames, classify, leaves, files).
+//! * [`Octree`]: the map (insert sensor frames: points or a
+//!   [`DepthImage`]; classify, leaves, files).
 //! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses), built by
 //!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
@@ -18,6 +19,7 @@
 //! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
 //! use one per thread.
 
+mod depth;
 mod error;
 mod linkset;
 mod octree;
@@ -25,6 +27,7 @@ mod points;
 mod query;
 mod robot;
 
+pub use depth::{camera_intrinsics, CameraIntrinsics, DepthImage};
 pub use error::{status_name, Error, Result};
 pub use linkset::{LinkSet, Shape, ShapeKind};
 pub use octree::Octree;
@@ -63,7 +66,8 @@ pub mod consts {
         OPX_ERROR_UNSUPPORTED, OPX_ERROR_VERSION, OPX_FORMAT_AUTO, OPX_FORMAT_BT, OPX_FORMAT_OT,
         OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
         OPX_JOINT_FLOATING, OPX_JOINT_NONE, OPX_JOINT_PLANAR, OPX_JOINT_PRISMATIC, OPX_JOINT_REVOLUTE, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
-        OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OK, OPX_UNKNOWN_FREE, OPX_UNKNOWN_OCCUPIED,
+        OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64,
+        OPX_SCALAR_UINT16, OPX_UNKNOWN_FREE, OPX_UNKNOWN_OCCUPIED,
         OPX_VERSION_MAJOR, OPX_VERSION_MINOR, OPX_VERSION_PATCH,
     };
 }

@@ -1,7 +1,7 @@
 //! The occupancy octree (`opx_octree`).
 use crate::error::{check, to_c_string, Result};
-use crate::{check_version, sys, CellInfo, InsertOptions, InsertReport, Leaf, OctreeOptions,
-            OctreeStats, Points};
+use crate::{check_version, sys, CameraIntrinsics, CellInfo, DepthImage, InsertOptions,
+            InsertReport, Leaf, OctreeOptions, OctreeStats, Points};
 use std::path::Path;
 use std::ptr;
 
@@ -97,6 +97,26 @@ impl Octree {
             sys::opx_octree_insert_points(self.raw, points.c_data(), points.len(),
                                           points.stride(), points.scalar_type(), options,
                                           &mut report)
+        })?;
+        Ok(report)
+    }
+
+    /// Inserts one depth frame, as [`Octree::insert_points`] inserts the
+    /// points it back-projects: the pixel in column `u`, row `v` with
+    /// depth `z` metres becomes `((u - cx) * z / fx, (v - cy) * z / fy, z)`
+    /// in the camera's optical frame (z forward, x right, y down), which
+    /// `options.sensor_pose` places in the map frame.  Pixels without a
+    /// return are skipped and counted in `pixels_no_return`.  The image is
+    /// read in place.
+    pub fn insert_depth_image(&mut self, image: &DepthImage<'_>, intrinsics: &CameraIntrinsics,
+                              options: &InsertOptions) -> Result<InsertReport> {
+        let mut report = InsertReport::default();
+        // SAFETY: the image borrows its pixels for its lifetime and its
+        // rows were checked to lie inside them; exclusive access to the
+        // octree; the other arguments are valid structs.
+        check(unsafe {
+            sys::opx_octree_insert_depth_image(self.raw, image.as_raw(), intrinsics, options,
+                                               &mut report)
         })?;
         Ok(report)
     }
