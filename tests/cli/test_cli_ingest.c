@@ -197,7 +197,7 @@ static void bad_command_lines_exit_2(void **state) {
     expect_usage_error(line, "resolution");
     snprintf(line, sizeof line, "ingest '%s' -o x.bt --res 2e6", cloud);
     expect_usage_error(line, "resolution");
-    expect_usage_error("ingest cloud.xyz -o x.bt", "not a .pcd or .ply file");
+    expect_usage_error("ingest cloud.xyz -o x.bt", "not a .pcd or .ply cloud, nor a .png, .tif or .tiff");
     snprintf(line, sizeof line, "ingest '%s' -o", cloud);
     expect_usage_error(line, "-o needs");
 }

@@ -1,57 +1,64 @@
-/* octoprox ingest CLOUD... -o MAP: build or update a map from point clouds. */
+/* octoprox ingest INPUT... -o MAP: build or update a map from point clouds
+ * and depth images. */
 #include "cli.h"
 #include "cloud_file.h"
 #include "commands.h"
+#include "ingest_depth.h"
 
 #include <string.h>
 #include <unistd.h>
 
 static const char kHelp[] =
-    "usage: octoprox ingest CLOUD.pcd|CLOUD.ply ... -o MAP.bt|MAP.ot\n"
+    "usage: octoprox ingest INPUT... -o MAP.bt|MAP.ot\n"
     "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--res 0.05]\n"
     "                       [--endpoints] [--max-range M] [--json]\n"
+    "                       [--intrinsics fx,fy,cx,cy --depth-scale S]\n"
     "\n"
-    "Inserts each cloud as one sensor frame (OctoMap semantics: ray-cast, the\n"
+    "Inserts each input as one sensor frame (OctoMap semantics: ray-cast, the\n"
     "cells along each ray become more free, the endpoint cells more occupied)\n"
     "and saves the map.  When MAP exists it is loaded and updated; otherwise a\n"
-    "new map is made.  Clouds: PCD v0.7 (ascii, binary) and PLY (ascii,\n"
-    "binary_little_endian), x y z as float or double, in the SENSOR frame.\n"
+    "new map is made.  Inputs:\n"
+    "  CLOUD.pcd, CLOUD.ply  PCD v0.7 (ascii, binary) and PLY (ascii,\n"
+    "                      binary_little_endian), x y z as float or double,\n"
+    "                      in the SENSOR frame;\n"
+    "  DEPTH.png, DEPTH.tif  16-bit one-channel depth images (PNG, TIFF), seen\n"
+    "                      by a pinhole camera whose optical frame (z forward,\n"
+    "                      x right, y down) is the SENSOR frame; 0 is no return.\n"
     "\n"
     "options:\n"
     "  -o, --output MAP    the map to write (.bt: occupancy only, .ot: log-odds)\n"
-    "  --sensor-pose POSE  the sensor frame in the map frame, for every cloud\n"
+    "  --sensor-pose POSE  the sensor frame in the map frame, for every input\n"
     "                      (metres; quaternion x,y,z,w; default identity)\n"
     "  --res R             resolution of a new map in metres (default 0.05); an\n"
     "                      existing map keeps its own and R must match it\n"
     "  --endpoints         insert endpoints only (no ray-casting, no free space)\n"
     "  --max-range M       skip points farther than M metres from the sensor\n"
+    "  --intrinsics fx,fy,cx,cy  the depth camera: focal lengths and principal\n"
+    "                      point (column, row) in pixels; needed by depth images\n"
+    "  --depth-scale S     depth units per metre of the depth images (1000 for\n"
+    "                      millimetres, 5000 for TUM RGB-D PNGs); needed by them\n"
     "  --json              one JSON object: output, updated, resolution, clouds\n"
-    "                      [{file, format, points, points_used, points_nonfinite,\n"
-    "                      points_out_of_range, points_outside_map, cells_hit,\n"
+    "                      [{file, format, points (pixels of an image),\n"
+    "                      points_used, points_nonfinite, points_out_of_range,\n"
+    "                      points_outside_map, pixels_no_return, cells_hit,\n"
     "                      cells_missed, insert_ms}], leaves {occupied,\n"
     "                      uncertain, free}\n"
     "  -h, --help          this help\n"
     "\n"
-    "exit codes: 0 ok, 2 usage error, 3 a cloud or the map cannot be read or\n"
+    "exit codes: 0 ok, 2 usage error, 3 an input or the map cannot be read or\n"
     "written, 4 internal error\n";
 
-#define MAX_CLOUDS 256
+#define MAX_INPUTS 256
 
 typedef struct ingest_args {
-    const char *clouds[MAX_CLOUDS];
-    int cloud_count;
+    const char *inputs[MAX_INPUTS]; /* clouds and depth images */
+    int input_count;
     const char *output;
     opx_insert_options insert;
+    ingest_camera camera;
     double resolution; /* 0: not given */
     int json;
 } ingest_args;
-
-typedef struct cloud_result {
-    char format[40];
-    size_t points;
-    opx_insert_report report;
-    double insert_ms;
-} cloud_result;
 
 static int ends_with(const char *text, const char *suffix) {
     const size_t n = strlen(text), m = strlen(suffix);
@@ -75,6 +82,8 @@ static int parse_option(cli_args *args, ingest_args *out) {
     } else if ((got = cli_value(args, "--max-range")) != 0) {
         if (got < 0 || cli_parse_double(args->value, &out->insert.max_range) != 0 || !(out->insert.max_range > 0.0))
             return cli_usage("ingest", "--max-range needs a positive distance in metres");
+    } else if ((got = ingest_camera_option(args, &out->camera)) != 0) {
+        if (got != 1) return got;
     } else {
         return cli_usage("ingest", "unknown option '%s'", args->argv[args->index]);
     }
@@ -85,24 +94,27 @@ static int parse_option(cli_args *args, ingest_args *out) {
 static int parse_arguments(int argc, char **argv, ingest_args *out) {
     cli_args args = {argc, argv, 1, NULL};
     const opx_insert_options defaults = OPX_INSERT_OPTIONS_INIT;
+    int code;
     memset(out, 0, sizeof *out);
     out->insert = defaults;
     for (; args.index < argc; ++args.index) {
         const char *arg = argv[args.index];
-        int code;
         if (cli_is_help(arg)) {
             fputs(kHelp, stdout);
             return CLI_EXIT_OK;
         }
         if (arg[0] != '-') {
-            if (!cloud_file_supported(arg)) return cli_usage("ingest", "'%s' is not a .pcd or .ply file", arg);
-            if (out->cloud_count == MAX_CLOUDS) return cli_usage("ingest", "more than %d clouds", MAX_CLOUDS);
-            out->clouds[out->cloud_count++] = arg;
+            if (!cloud_file_supported(arg) && !ingest_is_depth_image(arg))
+                return cli_usage("ingest", "'%s' is not a .pcd or .ply cloud, nor a .png, .tif or .tiff depth image",
+                                 arg);
+            if (out->input_count == MAX_INPUTS) return cli_usage("ingest", "more than %d inputs", MAX_INPUTS);
+            out->inputs[out->input_count++] = arg;
         } else if ((code = parse_option(&args, out)) >= 0) {
             return code;
         }
     }
-    if (out->cloud_count == 0) return cli_usage("ingest", "no cloud given");
+    if (out->input_count == 0) return cli_usage("ingest", "no cloud given (nor a depth image)");
+    if ((code = ingest_check_camera(&out->camera, out->inputs, out->input_count)) >= 0) return code;
     if (out->output == NULL) return cli_usage("ingest", "no output map given (-o MAP.bt)");
     if (!ends_with(out->output, ".bt") && !ends_with(out->output, ".ot"))
         return cli_usage("ingest", "the output map '%s' must end in .bt or .ot", out->output);
@@ -131,7 +143,7 @@ static int open_map(const ingest_args *a, opx_octree **map, int *updated) {
     return -1;
 }
 
-static int insert_cloud(const char *path, opx_octree *map, const opx_insert_options *insert, cloud_result *r) {
+static int insert_cloud(const char *path, opx_octree *map, const opx_insert_options *insert, ingest_result *r) {
     char error[600];
     cloud_points cloud;
     opx_status status;
@@ -150,20 +162,22 @@ static int insert_cloud(const char *path, opx_octree *map, const opx_insert_opti
     return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "inserting %s", path);
 }
 
-static void print_cloud_json(const char *path, const cloud_result *r, int last) {
+static void print_input_json(const char *path, const ingest_result *r, int last) {
     const opx_insert_report *p = &r->report;
     fputs("    {\"file\": ", stdout);
     json_string(stdout, path);
     fputs(", \"format\": ", stdout);
     json_string(stdout, r->format);
     printf(", \"points\": %zu, \"points_used\": %llu, \"points_nonfinite\": %llu, \"points_out_of_range\": %llu, "
-           "\"points_outside_map\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, \"insert_ms\": %.3f}%s\n",
+           "\"points_outside_map\": %llu, \"pixels_no_return\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, "
+           "\"insert_ms\": %.3f}%s\n",
            r->points, (unsigned long long)p->points_used, (unsigned long long)p->points_nonfinite,
            (unsigned long long)p->points_out_of_range, (unsigned long long)p->points_outside_map,
-           (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, r->insert_ms, last ? "" : ",");
+           (unsigned long long)p->pixels_no_return, (unsigned long long)p->cells_hit,
+           (unsigned long long)p->cells_missed, r->insert_ms, last ? "" : ",");
 }
 
-static void print_report(const ingest_args *a, const cloud_result *results, int updated,
+static void print_report(const ingest_args *a, const ingest_result *results, int updated,
                          const opx_octree_stats *s) {
     int i;
     if (a->json) {
@@ -172,17 +186,19 @@ static void print_report(const ingest_args *a, const cloud_result *results, int 
         printf(",\n  \"updated\": %s,\n  \"resolution\": ", updated ? "true" : "false");
         json_number(stdout, s->resolution);
         fputs(",\n  \"clouds\": [\n", stdout);
-        for (i = 0; i < a->cloud_count; ++i) print_cloud_json(a->clouds[i], &results[i], i + 1 == a->cloud_count);
+        for (i = 0; i < a->input_count; ++i) print_input_json(a->inputs[i], &results[i], i + 1 == a->input_count);
         printf("  ],\n  \"leaves\": {\"occupied\": %llu, \"uncertain\": %llu, \"free\": %llu}\n}\n",
                (unsigned long long)s->leaves_occupied, (unsigned long long)s->leaves_uncertain,
                (unsigned long long)s->leaves_free);
         return;
     }
-    for (i = 0; i < a->cloud_count; ++i) {
+    for (i = 0; i < a->input_count; ++i) {
         const opx_insert_report *p = &results[i].report;
-        printf("%s (%s): %zu points, %llu used, %llu skipped; %llu cells hit, %llu missed; %.1f ms\n",
-               a->clouds[i], results[i].format, results[i].points, (unsigned long long)p->points_used,
-               (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map),
+        printf("%s (%s): %zu %s, %llu used, %llu skipped; %llu cells hit, %llu missed; %.1f ms\n",
+               a->inputs[i], results[i].format, results[i].points,
+               ingest_is_depth_image(a->inputs[i]) ? "pixels" : "points", (unsigned long long)p->points_used,
+               (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map +
+                                    p->pixels_no_return),
                (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, results[i].insert_ms);
     }
     printf("%s %s: resolution %g m, leaves occupied %llu, uncertain %llu, free %llu\n",
@@ -190,12 +206,14 @@ static void print_report(const ingest_args *a, const cloud_result *results, int 
            (unsigned long long)s->leaves_uncertain, (unsigned long long)s->leaves_free);
 }
 
-static int ingest_all(const ingest_args *a, opx_octree *map, cloud_result *results) {
+static int ingest_all(const ingest_args *a, opx_octree *map, ingest_result *results) {
     cli_progress progress;
     int i, code = -1;
-    cli_progress_start(&progress, "ingesting clouds", (size_t)a->cloud_count);
-    for (i = 0; i < a->cloud_count && code < 0; ++i) {
-        code = insert_cloud(a->clouds[i], map, &a->insert, &results[i]);
+    cli_progress_start(&progress, "ingesting", (size_t)a->input_count);
+    for (i = 0; i < a->input_count && code < 0; ++i) {
+        const char *path = a->inputs[i];
+        code = ingest_is_depth_image(path) ? ingest_depth_file(path, map, &a->camera, &a->insert, &results[i])
+                                           : insert_cloud(path, map, &a->insert, &results[i]);
         cli_progress_update(&progress, (size_t)i + 1);
     }
     cli_progress_finish(&progress);
@@ -203,7 +221,7 @@ static int ingest_all(const ingest_args *a, opx_octree *map, cloud_result *resul
 }
 
 int cmd_ingest(int argc, char **argv) {
-    static cloud_result results[MAX_CLOUDS];
+    static ingest_result results[MAX_INPUTS];
     ingest_args a;
     opx_octree *map = NULL;
     opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
