@@ -72,6 +72,10 @@ INIT_TESTS(opx_insert_options, opx_insert_options_init, OPX_INSERT_OPTIONS_INIT,
            offsetof(opx_insert_options, max_range))
 INIT_TESTS(opx_insert_report, opx_insert_report_init, OPX_INSERT_REPORT_INIT, "report",
            offsetof(opx_insert_report, cells_hit))
+INIT_TESTS(opx_depth_image, opx_depth_image_init, OPX_DEPTH_IMAGE_INIT, "image",
+           offsetof(opx_depth_image, width))
+INIT_TESTS(opx_camera_intrinsics, opx_camera_intrinsics_init, OPX_CAMERA_INTRINSICS_INIT,
+           "intrinsics", offsetof(opx_camera_intrinsics, cx))
 INIT_TESTS(opx_cell_info, opx_cell_info_init, OPX_CELL_INFO_INIT, "info",
            offsetof(opx_cell_info, center))
 INIT_TESTS(opx_octree_stats, opx_octree_stats_init, OPX_OCTREE_STATS_INIT, "stats",
@@ -105,9 +109,16 @@ static void struct_layouts_are_fixed(void **state) {
     assert_int_equal(sizeof(opx_pose), 56);
     assert_int_equal(sizeof(opx_octree_options), 64);
     assert_int_equal(offsetof(opx_octree_options, resolution), 8);
-    assert_int_equal(sizeof(opx_insert_options), 72);
+    assert_int_equal(sizeof(opx_insert_options), 80);
     assert_int_equal(offsetof(opx_insert_options, sensor_pose), 8);
-    assert_int_equal(sizeof(opx_insert_report), 56);
+    assert_int_equal(offsetof(opx_insert_options, max_threads), 72);
+    assert_int_equal(sizeof(opx_insert_report), 64);
+    assert_int_equal(offsetof(opx_insert_report, pixels_no_return), 56);
+    assert_int_equal(sizeof(opx_depth_image), 48);
+    assert_int_equal(offsetof(opx_depth_image, data), 8);
+    assert_int_equal(offsetof(opx_depth_image, depth_scale), 40);
+    assert_int_equal(sizeof(opx_camera_intrinsics), 40);
+    assert_int_equal(offsetof(opx_camera_intrinsics, fx), 8);
     assert_int_equal(sizeof(opx_cell_info), 56);
     assert_int_equal(offsetof(opx_cell_info, depth), 48);
     assert_int_equal(sizeof(opx_octree_stats), 152);
@@ -129,6 +140,8 @@ int main(void) {
         INIT_TEST_ENTRIES(opx_octree_options_init),
         INIT_TEST_ENTRIES(opx_insert_options_init),
         INIT_TEST_ENTRIES(opx_insert_report_init),
+        INIT_TEST_ENTRIES(opx_depth_image_init),
+        INIT_TEST_ENTRIES(opx_camera_intrinsics_init),
         INIT_TEST_ENTRIES(opx_cell_info_init),
         INIT_TEST_ENTRIES(opx_octree_stats_init),
         INIT_TEST_ENTRIES(opx_urdf_options_init),
