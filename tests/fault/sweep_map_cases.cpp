@@ -109,6 +109,44 @@ private:
     opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
 };
 
+// A 16 x 12 depth frame in millimetres (every seventh pixel without a
+// return) through a pinhole camera at the sensor's pose: a failure while
+// its points are made, or while they go in, leaves the map as it was.
+class InsertDepthImage : public Attempt {
+public:
+    InsertDepthImage() : tree_(load_base_map()), depth_(kDepthWidth * kDepthHeight) {
+        for (size_t i = 0; i < depth_.size(); ++i)
+            depth_[i] = i % 7 == 0 ? 0 : static_cast<uint16_t>(1500 + 13 * (i % 40));
+    }
+    ~InsertDepthImage() override { opx_octree_destroy(tree_); }
+    opx_status call() override {
+        const opx_insert_options options = sensor_insert_options(OPX_INSERT_RAYCAST);
+        opx_depth_image image = OPX_DEPTH_IMAGE_INIT;
+        image.data = depth_.data();
+        image.width = kDepthWidth;
+        image.height = kDepthHeight;
+        opx_camera_intrinsics camera = OPX_CAMERA_INTRINSICS_INIT;
+        camera.fx = camera.fy = 10.0;
+        camera.cx = 7.5;
+        camera.cy = 5.5;
+        return opx_octree_insert_depth_image(tree_, &image, &camera, &options, &report_);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override {
+        record_map(record, tree_);
+        record.add("points_used", report_.points_used);
+        record.add("pixels_no_return", report_.pixels_no_return);
+        record.add("cells_hit", report_.cells_hit);
+        record.add("cells_missed", report_.cells_missed);
+    }
+
+private:
+    static constexpr size_t kDepthWidth = 16, kDepthHeight = 12;
+    opx_octree *tree_;
+    std::vector<uint16_t> depth_;
+    opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
+};
+
 class SaveImage : public Attempt {
 public:
     explicit SaveImage(int32_t format) : tree_(load_base_map()), format_(format), buffer_(1 << 20) {}
@@ -202,6 +240,7 @@ std::vector<SweepCase> map_and_robot_cases() {
                                {}, OPX_INSERT_RAYCAST, kLargeFramePoints),
         make_case<InsertFrame>("opx_octree_insert_points endpoints, large frame",
                                {}, OPX_INSERT_ENDPOINTS, kLargeFramePoints),
+        make_case<InsertDepthImage>("opx_octree_insert_depth_image", {}),
         make_case<SaveImage>("opx_octree_save_memory .bt", {}, OPX_FORMAT_BT),
         make_case<SaveImage>("opx_octree_save_memory .ot", {}, OPX_FORMAT_OT),
         make_case<LoadUrdf>("opx_linkset_load_urdf_string", {kUrdfdomNumbers, kTinyXmlLeak}),
