@@ -66,6 +66,7 @@ InsertSettings read_insert_options(const opx_insert_options *options) {
     settings.raycast = merged.mode == OPX_INSERT_RAYCAST;
     settings.sensor_pose = read_pose(merged.sensor_pose, "options.sensor_pose");
     settings.max_range = merged.max_range;
+    settings.max_threads = merged.max_threads;
     return settings;
 }
 

@@ -113,6 +113,17 @@ public:
     std::string getTreeType() const override { return "OcTree"; }
     BoundedOcTree *create() const override { return new BoundedOcTree(resolution); }
 
+    // The root an update starts from, made (as OctoMap's updateNode makes
+    // it) when the map is empty; `created` says so.
+    BoundedNode *root_for_update(bool &created) {
+        created = root == nullptr;
+        if (created) {
+            root = new BoundedNode();
+            ++tree_size;
+        }
+        return root;
+    }
+
     // The child-block store's memory (child_blocks.cpp).
     ChildBlockPool &child_blocks() { return child_blocks_; }
     const ChildBlockPool &child_blocks() const { return child_blocks_; }

@@ -1,83 +1,122 @@
-// Sensor frame insertion with OctoMap's semantics (insertPointCloud): rays
-// make cells more free, endpoints more occupied, each cell is updated once
-// per frame and an endpoint wins over a ray.
+// Sensor frame insertion with OctoMap's semantics (insertPointCloud, not
+// discretized, lazy evaluation off): rays make cells more free, endpoints
+// more occupied, each cell is updated once per frame and an endpoint wins
+// over a ray.  The map afterwards is OctoMap's, cell for cell and bit for
+// bit; only the way there differs (frame_marks.hpp, frame_update.hpp).
 #include "octree/sensor_octree.hpp"
 
-#include "capi/error.hpp"
-
+#include "base/parallel.hpp"
+#include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
+#include "octree/frame_cells.hpp"
+#include "octree/frame_rays.hpp"
+#include "octree/frame_update.hpp"
+#include "octree/ray_walk.hpp"
 #include "octree/update_reserve.hpp"
 
-#include <cmath>
+#include <algorithm>
+#include <atomic>
+#include <memory>
+#include <thread>
 
 namespace octoprox {
 namespace {
 
-bool is_finite(const Vec3 &p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+constexpr size_t kRaysPerChunk = 1024;
+// Cells of the frame's box beyond the rays' ends and origin: a ray may step
+// a cell past its end's cell before it stops (float rounding), and the
+// walk proves a ray stays inside with a few cells of slack.
+constexpr uint32_t kBoxPadding = 8;
 
-// Filters the frame into map-frame float points, counting what is skipped.
-octomap::Pointcloud usable_points(const SensorOctree &tree, const PointSource &points,
-                                  const InsertSettings &settings, InsertCounts &counts) {
-    const bool limited = settings.max_range > 0.0 && std::isfinite(settings.max_range);
-    octomap::Pointcloud cloud;
-    cloud.reserve(points.count);
-    for (size_t i = 0; i < points.count; ++i) {
-        const Vec3 p_sensor = points.read(i);
-        if (!is_finite(p_sensor)) {
-            ++counts.nonfinite;
-            continue;
+// One thread's share of the rays: chunks taken in turn from a shared
+// counter, so threads that get short rays take more of them.
+struct RayWorker {
+    FrameMarks marks;
+    std::vector<uint32_t> strays;  // rays that might leave the marks' box
+};
+
+class RayCast {
+public:
+    RayCast(const BoundedOcTree &tree, const FrameRays &rays, const KeyBox &box)
+        : rays_(rays), box_(box), walker_(tree, rays.origin) {}
+
+    void run(RayWorker &worker) {
+        worker.marks.reset(box_);
+        const size_t total = rays_.ends.size();
+        for (;;) {
+            const size_t begin = next_.fetch_add(kRaysPerChunk, std::memory_order_relaxed);
+            if (begin >= total) break;
+            const size_t end = std::min(total, begin + kRaysPerChunk);
+            walker_.walk(rays_.ends, rays_.end_keys, begin, end, worker.marks, worker.strays);
         }
-        if (limited && p_sensor.norm() > settings.max_range) {
-            ++counts.out_of_range;
-            continue;
-        }
-        // OctoMap works in float: round once, then test the rounded point.
-        const Vec3 p_map = settings.sensor_pose.apply(p_sensor);
-        const octomap::point3d p(static_cast<float>(p_map.x()), static_cast<float>(p_map.y()),
-                                 static_cast<float>(p_map.z()));
-        if (!tree.contains(Vec3(p.x(), p.y(), p.z()))) {
-            ++counts.outside_map;
-            continue;
-        }
-        cloud.push_back(p);
     }
-    counts.used = cloud.size();
-    return cloud;
+
+private:
+    const FrameRays &rays_;
+    const KeyBox box_;
+    RayWalker walker_;
+    std::atomic<size_t> next_{0};
+};
+
+void mark_endpoints(const FrameRays &rays, FrameMarks &marks) {
+    for (const octomap::OcTreeKey &key : rays.hit_keys) {
+        const uint32_t k[3] = {key[0], key[1], key[2]};
+        marks.mark_endpoint(marks.bit_of(k));
+    }
+}
+
+// OctoMap's own ray for the few rays that graze the map's outer faces.
+std::vector<uint64_t> stray_cells(const BoundedOcTree &tree, const FrameRays &rays,
+                                  const std::vector<RayWorker> &workers) {
+    std::vector<uint64_t> cells;
+    octomap::KeyRay ray;
+    for (const RayWorker &w : workers)
+        for (const uint32_t index : w.strays) {
+            if (!tree.computeRayKeys(rays.origin, rays.ends[index], ray)) continue;
+            for (const octomap::OcTreeKey &key : ray) cells.push_back(morton_encode(key[0], key[1], key[2]));
+        }
+    return cells;
+}
+
+FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint32_t max_threads) {
+    std::vector<RayWorker> workers(task_count(max_threads, (rays.ends.size() + kRaysPerChunk - 1) / kRaysPerChunk));
+    RayCast cast(tree, rays, rays.box.padded(kBoxPadding));
+    run_tasks(workers.size(), [&](size_t i) { cast.run(workers[i]); });
+    FrameMarks &marks = workers[0].marks;
+    for (size_t i = 1; i < workers.size(); ++i) marks.merge_crossed(workers[i].marks);
+    mark_endpoints(rays, marks);
+    return collect_cells(marks, stray_cells(tree, rays, workers));
+}
+
+FrameCells endpoint_cells(const FrameRays &rays) {
+    FrameMarks marks;
+    marks.reset(rays.box);
+    mark_endpoints(rays, marks);
+    return collect_cells(marks, {});
 }
 
 }  // namespace
 
 InsertCounts SensorOctree::insert(const PointSource &points, const InsertSettings &settings) {
-    const Vec3 &origin_map = settings.sensor_pose.translation;
-    const octomap::point3d origin(static_cast<float>(origin_map.x()), static_cast<float>(origin_map.y()),
-                                  static_cast<float>(origin_map.z()));
-    if (settings.raycast && !contains(Vec3(origin.x(), origin.y(), origin.z())))
-        throw_invalid("sensor_pose.position lies outside the map cube");
-
     InsertCounts counts;
-    const octomap::Pointcloud cloud = usable_points(*this, points, settings, counts);
-    octomap::KeySet free_cells, occupied_cells;
-    if (settings.raycast) {
-        tree_->computeUpdate(cloud, origin, free_cells, occupied_cells, -1.0);
-    } else {
-        for (const auto &p : cloud) occupied_cells.insert(tree_->coordToKey(p));
-    }
+    const FrameRays rays =
+        prepare_rays(*this, points, settings, task_count(settings.max_threads, points.count / 4096 + 1), counts);
+    const FrameCells cells =
+        settings.raycast ? raycast_cells(*tree_, rays, settings.max_threads) : endpoint_cells(rays);
     // Everything that may allocate happens above or here: the cell updates
     // below take their nodes from reserved blocks, so a frame goes into the
     // map whole or, out of memory, not at all.  (An empty map's root is made
-    // by the first update, before any cell changes.)
-    reserve_update(*tree_, free_cells, occupied_cells);
+    // by the update, before any cell changes.)
+    reserve_update(*tree_, cells);
     ++generation_;
-    // The same order as OctoMap's insertPointCloud, so the float log-odds
-    // sums are identical.  The scope keeps the inner obstacle boxes.
-    const BoundsScope scope(occupied_log_odds_);
-    for (const auto &key : free_cells) tree_->updateNode(key, false, false);
-    for (const auto &key : occupied_cells) tree_->updateNode(key, true, false);
+    {
+        const BoundsScope scope(occupied_log_odds_);  // keeps the inner obstacle boxes
+        apply_frame_cells(*tree_, cells);
+    }
     tree_->child_blocks().release_spares();
-    grow_known_bounds(free_cells);
-    grow_known_bounds(occupied_cells);
-    counts.cells_missed = free_cells.size();
-    counts.cells_hit = occupied_cells.size();
+    grow_known_bounds(cells.box);
+    counts.cells_missed = cells.misses;
+    counts.cells_hit = cells.hits;
     return counts;
 }
 

@@ -77,13 +77,16 @@ void SensorOctree::recompute_known_bounds() {
                              Vec3(s.known_max[0], s.known_max[1], s.known_max[2])};
 }
 
-void SensorOctree::grow_known_bounds(const octomap::KeySet &keys) {
+void SensorOctree::grow_known_bounds(const KeyBox &keys) {
+    if (keys.empty) return;
     const double res = params_.resolution;
-    for (const octomap::OcTreeKey &key : keys) {
-        const Vec3 lo((key[0] - kKeyCenter) * res, (key[1] - kKeyCenter) * res, (key[2] - kKeyCenter) * res);
-        known_bounds_.grow(lo);
-        known_bounds_.grow(Vec3(lo.array() + res));
+    Vec3 lo, hi;
+    for (int axis = 0; axis < 3; ++axis) {
+        lo[axis] = (static_cast<double>(keys.lo[axis]) - kKeyCenter) * res;
+        hi[axis] = (static_cast<double>(keys.hi[axis]) - kKeyCenter + 1) * res;
     }
+    known_bounds_.grow(lo);
+    known_bounds_.grow(hi);
 }
 
 SensorOctree::~SensorOctree() = default;

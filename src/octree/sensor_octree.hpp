@@ -4,11 +4,10 @@
 #pragma once
 
 #include "geometry/aabb.hpp"
+#include "octree/frame_marks.hpp"
 #include "geometry/pose.hpp"
 #include "octree/octree_params.hpp"
 #include "octree/octree_view.hpp"
-
-#include <octomap/OcTreeKey.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -34,6 +33,7 @@ struct InsertSettings {
     bool raycast = true;
     Pose sensor_pose;
     double max_range = -1.0;  // <= 0 or infinite: no limit
+    uint32_t max_threads = 1;  // 0: one per hardware thread
 };
 
 struct InsertCounts {
@@ -91,7 +91,7 @@ public:
 
 private:
     void apply_params();
-    void grow_known_bounds(const octomap::KeySet &keys);
+    void grow_known_bounds(const KeyBox &keys);
     void recompute_known_bounds();
 
     OctreeParams params_;

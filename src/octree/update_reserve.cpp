@@ -33,36 +33,29 @@ unsigned shared_depth(uint64_t a, uint64_t b) {
     return kDepth - 1 - highest_differing_bit / 3;
 }
 
-void append_codes(const octomap::KeySet &keys, std::vector<uint64_t> &codes) {
-    for (const octomap::OcTreeKey &key : keys) codes.push_back(morton_encode(key[0], key[1], key[2]));
-}
-
 }  // namespace
 
-size_t child_blocks_needed(const BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second) {
-    std::vector<uint64_t> codes;
-    codes.reserve(first.size() + second.size());
-    append_codes(first, codes);
-    append_codes(second, codes);
+size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &frame) {
     // In Morton order the keys through any one node are consecutive, so a
     // node is shared with the previous key or with none before it.
-    std::sort(codes.begin(), codes.end());
-    codes.erase(std::unique(codes.begin(), codes.end()), codes.end());
+    const std::vector<uint64_t> &cells = frame.cells;
     size_t blocks = 0;
-    for (size_t i = 0; i < codes.size(); ++i) {
+    for (size_t i = 0; i < cells.size(); ++i) {
+        const uint64_t code = FrameCells::code(cells[i]);
         uint32_t x, y, z;
-        morton_decode(codes[i], x, y, z);
+        morton_decode(code, x, y, z);
         const octomap::OcTreeKey key(static_cast<octomap::key_type>(x), static_cast<octomap::key_type>(y),
                                      static_cast<octomap::key_type>(z));
         const unsigned needs_from = first_depth_needing_block(tree, key);
-        const unsigned new_from = i == 0 ? needs_from : std::max(needs_from, shared_depth(codes[i - 1], codes[i]) + 1);
+        const unsigned new_from =
+            i == 0 ? needs_from : std::max(needs_from, shared_depth(FrameCells::code(cells[i - 1]), code) + 1);
         if (new_from < kDepth) blocks += kDepth - new_from;
     }
     return blocks;
 }
 
-void reserve_update(BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second) {
-    tree.child_blocks().reserve(child_blocks_needed(tree, first, second));
+void reserve_update(BoundedOcTree &tree, const FrameCells &cells) {
+    tree.child_blocks().reserve(child_blocks_needed(tree, cells));
 }
 
 }  // namespace octoprox

@@ -5,24 +5,23 @@
 
 #include "octree/bounded_tree.hpp"
 
-#include <octomap/OcTreeKey.h>
+#include "octree/frame_cells.hpp"
 
 #include <cstddef>
 
 namespace octoprox {
 
-// How many child blocks updating every cell of `first` and `second` (leaf
-// keys, at the finest depth) takes from the pool: one per node on the
+// How many child blocks updating every cell of `cells` takes from the pool: one per node on the
 // cells' paths that has no children yet, or does not exist yet, counted
 // once per node.  Exact for OctoMap's updateNode, which creates children
 // within an existing block and expands a pruned node into one block.
-size_t child_blocks_needed(const BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second);
+size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &cells);
 
 // Makes sure the tree's pool can hand out that many blocks without a heap
 // allocation; throws std::bad_alloc, changing nothing in the map, if not.
 // After the update, the tree's pool gives back what was reserved and not
 // used (ChildBlockPool::release_spares): the count is an upper bound, as
 // blocks a prune frees are taken again by later cells.
-void reserve_update(BoundedOcTree &tree, const octomap::KeySet &first, const octomap::KeySet &second);
+void reserve_update(BoundedOcTree &tree, const FrameCells &cells);
 
 }  // namespace octoprox

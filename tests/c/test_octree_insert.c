@@ -170,11 +170,11 @@ static void report_counters_add_up_to_count(void **state) {
     opx_octree *tree = new_tree(RES);
     const double edge = 32768.0 * RES - C0; /* centre of the last cell along +x */
     const double xyz[] = {
-        -1.0, 0.0,  0.0, /* used: 4 free cells, 1 hit */
-        0.0,  -2.0, 0.0, /* used: 8 free cells (origin shared), 1 hit */
+        -1.0, 0.0,  0.0, /* used: 1 hit, 4 cells ahead of it */
+        0.0,  -2.0, 0.0, /* used: 1 hit, 7 free cells (the origin's counted above) */
         NAN,  0.0,  0.0, /* nonfinite */
         0.0,  INFINITY, 0.0, /* nonfinite */
-        -6.0, 0.0,  0.0, /* beyond max_range 5 */
+        -6.0, 0.0,  0.0, /* beyond max_range 5: cut, 20 cells to 5 m, the hit above among them */
         1.0,  0.0,  0.0, /* outside the map cube */
     };
     opx_insert_options options = sensor_at(edge, C0, C0, OPX_INSERT_RAYCAST);
@@ -185,10 +185,10 @@ static void report_counters_add_up_to_count(void **state) {
     assert_int_equal(r.points_out_of_range, 1);
     assert_int_equal(r.points_outside_map, 1);
     assert_int_equal(r.cells_hit, 2);
-    assert_int_equal(r.cells_missed, 11);
+    assert_int_equal(r.cells_missed, 19 + 7);
     const opx_octree_stats stats = stats_of(tree);
     assert_int_equal(stats.leaves_occupied, 2);
-    assert_int_equal(stats.leaves_free, 11);
+    assert_int_equal(stats.leaves_free, 19 + 7);
     opx_octree_destroy(tree);
 }
 

@@ -158,9 +158,10 @@ static void occupied_threshold_is_inclusive(void **state) {
     opx_octree_destroy(tree);
 }
 
-/* Points beyond max_range are skipped: no hit and, unlike OctoMap, no
- * free cells either (documented in opx_insert_options). */
-static void max_range_skips_points_and_their_rays(void **state) {
+/* A point beyond max_range gives no hit; as in OctoMap its ray is cut at
+ * max_range and frees the cells up to there (documented in
+ * opx_insert_options). */
+static void max_range_cuts_rays(void **state) {
     (void)state;
     opx_octree *tree = new_tree(RES);
     const double xyz[6] = {1.0, 0.0, 0.0, 0.0, 3.0, 0.0};
@@ -169,8 +170,12 @@ static void max_range_skips_points_and_their_rays(void **state) {
     const opx_insert_report r = insert_f64(tree, xyz, 2, &options);
     assert_int_equal(r.points_used, 1);
     assert_int_equal(r.points_out_of_range, 1);
-    assert_int_equal(r.cells_missed, 4);
-    assert_cell(tree, C0, 0.375, C0, OPX_CELL_UNKNOWN, 0.5);
+    assert_int_equal(r.cells_hit, 1);
+    /* 4 cells along +x (the origin's included), 7 more along +y up to 2 m. */
+    assert_int_equal(r.cells_missed, 11);
+    assert_cell(tree, C0, 0.375, C0, OPX_CELL_FREE, 0.4);
+    assert_cell(tree, C0, C0 + 7 * RES, C0, OPX_CELL_FREE, 0.4);
+    assert_cell(tree, C0, C0 + 8 * RES, C0, OPX_CELL_UNKNOWN, 0.5); /* the cut end's cell */
     assert_cell(tree, C0, 3.125, C0, OPX_CELL_UNKNOWN, 0.5);
     /* +infinity and negative values mean no limit. */
     options.max_range = INFINITY;
@@ -217,7 +222,7 @@ int main(void) {
         cmocka_unit_test(clamping_with_custom_bounds),
         cmocka_unit_test(thresholds_choose_the_class),
         cmocka_unit_test(occupied_threshold_is_inclusive),
-        cmocka_unit_test(max_range_skips_points_and_their_rays),
+        cmocka_unit_test(max_range_cuts_rays),
         cmocka_unit_test(equal_siblings_are_pruned),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -44,6 +44,11 @@ opx_insert_report insert_frame(opx_octree *tree, int32_t mode, const Pose &pose,
     return report;
 }
 
+octomap::point3d map_origin(const Pose &pose) {
+    return octomap::point3d(static_cast<float>(pose.position[0]), static_cast<float>(pose.position[1]),
+                            static_cast<float>(pose.position[2]));
+}
+
 // The frame's finite points within max_range (<= 0: all), moved to the map
 // frame in double (the way the library documents it) and rounded to float.
 octomap::Pointcloud map_frame_cloud(const Pose &pose, double max_range) {
@@ -54,27 +59,24 @@ octomap::Pointcloud map_frame_cloud(const Pose &pose, double max_range) {
     for (size_t i = 0; i < g_frame.count; ++i) {
         const float *p = &g_frame.xyz[3 * i];
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-        const Eigen::Vector3d sensor(p[0], p[1], p[2]);
-        if (max_range > 0 && sensor.norm() > max_range) continue;
-        const Eigen::Vector3d map = rotation * sensor + translation;
-        cloud.push_back(static_cast<float>(map.x()), static_cast<float>(map.y()), static_cast<float>(map.z()));
+        const Eigen::Vector3d map = rotation * Eigen::Vector3d(p[0], p[1], p[2]) + translation;
+        const octomap::point3d point(static_cast<float>(map.x()), static_cast<float>(map.y()),
+                                     static_cast<float>(map.z()));
+        // OctoMap's range test, in float.
+        if (max_range > 0 && !((point - map_origin(pose)).norm() <= max_range)) continue;
+        cloud.push_back(point);
     }
     return cloud;
 }
 
-octomap::point3d map_origin(const Pose &pose) {
-    return octomap::point3d(static_cast<float>(pose.position[0]), static_cast<float>(pose.position[1]),
-                            static_cast<float>(pose.position[2]));
-}
-
 // OctoMap's reference insert; returns the sizes of its hit and miss sets.
 void reference_raycast(octomap::OcTree &tree, const Pose &pose, double max_range, size_t *hits, size_t *misses) {
-    const octomap::Pointcloud cloud = map_frame_cloud(pose, max_range);
+    const octomap::Pointcloud cloud = map_frame_cloud(pose, -1.0);
     octomap::KeySet free_cells, occupied_cells;
-    tree.computeUpdate(cloud, map_origin(pose), free_cells, occupied_cells, -1.0);
+    tree.computeUpdate(cloud, map_origin(pose), free_cells, occupied_cells, max_range);
     *hits = occupied_cells.size();
     *misses = free_cells.size();
-    tree.insertPointCloud(cloud, map_origin(pose), -1.0, false, false);
+    tree.insertPointCloud(cloud, map_origin(pose), max_range, false, false);
 }
 
 void assert_same_map(const char *label, const opx_octree *ours, const octomap::OcTree &theirs) {
@@ -115,8 +117,8 @@ void test_endpoints_identity(void **) {
     opx_octree_destroy(ours);
 }
 
-// Points beyond max_range are dropped before ray casting: no hit and no
-// free space from them, so no occupied cell lies beyond the range.
+// Points beyond max_range give no hit, and, as in OctoMap, their rays are
+// cut at max_range and free the cells up to there.
 void test_max_range(void **) {
     const double max_range = 1.2, resolution = 0.05;
     opx_octree *ours = new_octree(resolution);
@@ -134,6 +136,8 @@ void test_max_range(void **) {
     octomap::OcTree theirs(resolution);
     size_t hits = 0, misses = 0;
     reference_raycast(theirs, kIdentity, max_range, &hits, &misses);
+    assert_int_equal(report.cells_hit, hits);
+    assert_int_equal(report.cells_missed, misses);
     assert_same_map("ray-cast, max range 1.2 m, 5 cm", ours, theirs);
     print_message("max range 1.2 m: %llu points used, %llu beyond range\n", (unsigned long long)report.points_used,
                   (unsigned long long)report.points_out_of_range);

@@ -1,12 +1,15 @@
 // reserve_update (update_reserve.cpp): after it, a frame's cell updates
-// take every child block from the pool without growing it, whatever the
+// (apply_frame_cells) take every child block from the pool without growing it, whatever the
 // map held before (empty, earlier frames, pruned and clamped regions), so
 // an update can only run out of memory before its first cell changes.
+#include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
+#include "octree/frame_update.hpp"
 #include "octree/update_reserve.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace {
@@ -31,21 +34,29 @@ Frame random_frame(BoundedOcTree &tree, std::mt19937 &rng, int points) {
     return frame;
 }
 
-void apply(BoundedOcTree &tree, const Frame &frame) {
-    for (const auto &key : frame.free_cells) tree.updateNode(key, false, false);
-    for (const auto &key : frame.occupied_cells) tree.updateNode(key, true, false);
+// The frame's cells as the insert hands them over: Morton order, an
+// endpoint flag.
+octoprox::FrameCells cells_of(const Frame &frame) {
+    octoprox::FrameCells cells;
+    for (const auto &key : frame.free_cells) cells.cells.push_back(octoprox::morton_encode(key[0], key[1], key[2]));
+    for (const auto &key : frame.occupied_cells)
+        cells.cells.push_back(octoprox::morton_encode(key[0], key[1], key[2]) | octoprox::FrameCells::kHitBit);
+    std::sort(cells.cells.begin(), cells.cells.end(),
+              [](uint64_t a, uint64_t b) { return octoprox::FrameCells::code(a) < octoprox::FrameCells::code(b); });
+    return cells;
 }
 
 // Reserves, applies, and checks that the update never held more blocks at
 // once than counted (blocks freed by a prune and taken again by a later
 // expansion are the same blocks) and the pool took no new slab.
 void apply_reserved(BoundedOcTree &tree, const Frame &frame) {
-    const size_t needed = octoprox::child_blocks_needed(tree, frame.free_cells, frame.occupied_cells);
-    octoprox::reserve_update(tree, frame.free_cells, frame.occupied_cells);
+    const octoprox::FrameCells cells = cells_of(frame);
+    const size_t needed = octoprox::child_blocks_needed(tree, cells);
+    octoprox::reserve_update(tree, cells);
     const size_t slab_bytes = tree.child_blocks().bytes_reserved();
     const size_t in_use = tree.child_blocks().blocks_in_use();
     tree.child_blocks().reset_peak();
-    apply(tree, frame);
+    octoprox::apply_frame_cells(tree, cells);
     EXPECT_LE(tree.child_blocks().peak_blocks_in_use() - in_use, needed);
     EXPECT_EQ(tree.child_blocks().bytes_reserved(), slab_bytes) << "the update grew the pool after its reserve";
 }
@@ -78,10 +89,10 @@ TEST(UpdateReserve, CountIsExactForIsolatedCells) {
     frame.occupied_cells.insert(tree.coordToKey(1.0, 1.0, 1.0));
     frame.occupied_cells.insert(tree.coordToKey(-1.0, 2.0, 0.5));
     frame.occupied_cells.insert(tree.coordToKey(1.0, 1.0, 1.05));  // a neighbour of the first
-    const size_t needed = octoprox::child_blocks_needed(tree, frame.free_cells, frame.occupied_cells);
+    const size_t needed = octoprox::child_blocks_needed(tree, cells_of(frame));
     apply_reserved(tree, frame);
     EXPECT_EQ(needed, tree.child_blocks().blocks_in_use());
-    EXPECT_EQ(octoprox::child_blocks_needed(tree, frame.free_cells, frame.occupied_cells), 0u);
+    EXPECT_EQ(octoprox::child_blocks_needed(tree, cells_of(frame)), 0u);
 }
 
 }  // namespace

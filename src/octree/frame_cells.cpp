@@ -1,0 +1,119 @@
+#include "octree/frame_cells.hpp"
+
+#include "broadphase/morton.hpp"
+#include "broadphase/radix_sort.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace octoprox {
+namespace {
+
+constexpr int kBrickCodeBits = 3 * (16 - brick::kShift);
+
+// A brick's bits in the marks are x + 8 y + 64 z; the map's order inside
+// the brick is the Morton order of (x, y, z).
+const std::array<uint16_t, brick::kBits> &morton_of_local() {
+    static const std::array<uint16_t, brick::kBits> table = [] {
+        std::array<uint16_t, brick::kBits> t{};
+        for (uint32_t local = 0; local < brick::kBits; ++local)
+            t[local] = static_cast<uint16_t>(morton_encode(local & 7, (local >> 3) & 7, local >> 6));
+        return t;
+    }();
+    return table;
+}
+
+void to_morton_order(const uint64_t *linear, uint64_t out[brick::kWords]) {
+    const auto &table = morton_of_local();
+    std::fill(out, out + brick::kWords, 0);
+    for (int w = 0; w < brick::kWords; ++w)
+        for (uint64_t bits = linear[w]; bits != 0; bits &= bits - 1) {
+            const uint32_t m = table[w * 64 + __builtin_ctzll(bits)];
+            out[m >> 6] |= uint64_t{1} << (m & 63);
+        }
+}
+
+bool is_empty(const uint64_t *words) {
+    uint64_t any = 0;
+    for (int w = 0; w < brick::kWords; ++w) any |= words[w];
+    return any == 0;
+}
+
+// Emits one brick's cells in Morton order and grows the box by them.
+void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *endpoint, FrameCells &out) {
+    uint64_t hit[brick::kWords], any[brick::kWords];
+    to_morton_order(endpoint, hit);
+    to_morton_order(crossed, any);
+    for (int w = 0; w < brick::kWords; ++w) {
+        any[w] |= hit[w];
+        for (uint64_t bits = any[w]; bits != 0; bits &= bits - 1) {
+            const int b = __builtin_ctzll(bits);
+            const uint64_t code = (brick_code << 9) | static_cast<uint64_t>(w * 64 + b);
+            const bool is_hit = (hit[w] >> b) & 1;
+            out.cells.push_back(is_hit ? code | FrameCells::kHitBit : code);
+            ++(is_hit ? out.hits : out.misses);
+        }
+    }
+}
+
+// The box of the emitted cells, from the first and last cells along each
+// axis: exact, and cheap next to the cells themselves.
+KeyBox box_of(const std::vector<uint64_t> &cells) {
+    KeyBox box;
+    for (const uint64_t cell : cells) {
+        uint32_t key[3];
+        morton_decode(FrameCells::code(cell), key[0], key[1], key[2]);
+        box.grow(key);
+    }
+    return box;
+}
+
+// Cells found outside the marks join the sorted list: sorted, merged with
+// it, and each cell kept once (an endpoint wins).
+void merge_extra(FrameCells &out, std::vector<uint64_t> extra) {
+    if (extra.empty()) return;
+    extra.insert(extra.end(), out.cells.begin(), out.cells.end());
+    std::sort(extra.begin(), extra.end(), [](uint64_t a, uint64_t b) {
+        return FrameCells::code(a) != FrameCells::code(b) ? FrameCells::code(a) < FrameCells::code(b) : a > b;
+    });
+    out.cells.clear();
+    out.hits = out.misses = 0;
+    for (const uint64_t cell : extra) {
+        if (!out.cells.empty() && FrameCells::code(out.cells.back()) == FrameCells::code(cell)) continue;
+        out.cells.push_back(cell);
+        ++(FrameCells::is_hit(cell) ? out.hits : out.misses);
+    }
+}
+
+}  // namespace
+
+FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra) {
+    // The non-empty bricks, by the Morton code of their corner.
+    std::vector<uint64_t> codes;
+    std::vector<uint32_t> bricks;
+    const uint32_t *n = marks.bricks_per_axis();
+    const uint32_t *lo = marks.lowest_key();
+    size_t index = 0;
+    for (uint32_t z = 0; z < n[2]; ++z)
+        for (uint32_t y = 0; y < n[1]; ++y)
+            for (uint32_t x = 0; x < n[0]; ++x, ++index) {
+                if (is_empty(marks.crossed(index)) && is_empty(marks.endpoint(index))) continue;
+                codes.push_back(morton_encode((lo[0] >> brick::kShift) + x, (lo[1] >> brick::kShift) + y,
+                                              (lo[2] >> brick::kShift) + z));
+                bricks.push_back(static_cast<uint32_t>(index));
+            }
+    RadixScratch scratch;
+    RadixSortOptions options;
+    options.key_bits = kBrickCodeBits;
+    radix_sort(codes, bricks, scratch, options);
+
+    FrameCells out;
+    out.cells.reserve(codes.size() * 64);
+    for (size_t i = 0; i < codes.size(); ++i)
+        emit_brick(codes[i], marks.crossed(bricks[i]), marks.endpoint(bricks[i]), out);
+    merge_extra(out, std::move(extra));
+    out.box = box_of(out.cells);
+    return out;
+}
+
+}  // namespace octoprox

@@ -1,0 +1,30 @@
+// The cells a frame updates, in the order a depth-first walk of the map
+// meets them: a cell holding an
+// endpoint updated as occupied and every other crossed cell as free (as
+// OctoMap's computeUpdate, which removes endpoint cells from the free set).
+#pragma once
+
+#include "octree/frame_marks.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace octoprox {
+
+struct FrameCells {
+    // Morton codes of finest-cell keys (x in bit 0), ascending, each once;
+    // kHitBit set for occupied updates.
+    static constexpr uint64_t kHitBit = uint64_t{1} << 63;
+    std::vector<uint64_t> cells;
+    uint64_t hits = 0, misses = 0;
+    KeyBox box;  // keys of every cell
+
+    static uint64_t code(uint64_t cell) { return cell & ~kHitBit; }
+    static bool is_hit(uint64_t cell) { return (cell & kHitBit) != 0; }
+};
+
+// `extra` holds cells found outside the marks (Morton code, kHitBit for an
+// endpoint), in any order, duplicates allowed.
+FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra);
+
+}  // namespace octoprox

@@ -1,0 +1,68 @@
+#include "octree/frame_marks.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <new>
+
+namespace octoprox {
+namespace {
+
+constexpr uint32_t kMaxKey = 65535;  // OctoMap's 16-bit keys
+
+}  // namespace
+
+void KeyBox::grow(const uint32_t key[3]) {
+    for (int axis = 0; axis < 3; ++axis) {
+        lo[axis] = empty ? key[axis] : std::min(lo[axis], key[axis]);
+        hi[axis] = empty ? key[axis] : std::max(hi[axis], key[axis]);
+    }
+    empty = false;
+}
+
+void KeyBox::grow(const KeyBox &other) {
+    if (other.empty) return;
+    grow(other.lo);
+    grow(other.hi);
+}
+
+KeyBox KeyBox::padded(uint32_t cells) const {
+    KeyBox out = *this;
+    if (empty) return out;
+    for (int axis = 0; axis < 3; ++axis) {
+        out.lo[axis] = lo[axis] > cells ? lo[axis] - cells : 0;
+        out.hi[axis] = std::min(kMaxKey, hi[axis] + cells);
+    }
+    return out;
+}
+
+uint64_t KeyBox::volume() const {
+    if (empty) return 0;
+    uint64_t cells = 1;
+    for (int axis = 0; axis < 3; ++axis) cells *= uint64_t{hi[axis] - lo[axis]} + 1;
+    return cells;
+}
+
+void FrameMarks::reset(const KeyBox &box) {
+    box_ = box;
+    for (int axis = 0; axis < 3; ++axis) {
+        lo_[axis] = box.empty ? 0 : box.lo[axis] & ~brick::kMask;
+        bricks_[axis] = box.empty ? 0 : ((box.hi[axis] - lo_[axis]) >> brick::kShift) + 1;
+    }
+    brick_stride_[0] = 1;
+    brick_stride_[1] = bricks_[0];
+    brick_stride_[2] = int64_t{bricks_[0]} * bricks_[1];
+    words_ = brick_count() * brick::kWords;
+    crossed_.reset();
+    endpoint_.reset();
+    crossed_.reset(static_cast<uint64_t *>(std::calloc(std::max<size_t>(words_, 1), sizeof(uint64_t))));
+    endpoint_.reset(static_cast<uint64_t *>(std::calloc(std::max<size_t>(words_, 1), sizeof(uint64_t))));
+    if (crossed_ == nullptr || endpoint_ == nullptr) throw std::bad_alloc();
+}
+
+void FrameMarks::FreeWords::operator()(uint64_t *words) const { std::free(words); }
+
+void FrameMarks::merge_crossed(const FrameMarks &other) {
+    for (size_t i = 0; i < words_; ++i) crossed_[i] |= other.crossed_[i];
+}
+
+}  // namespace octoprox

@@ -1,0 +1,94 @@
+// The cells one sensor frame touches, as two marks per cell (crossed by a
+// ray, holds an endpoint): bitmaps over the frame's box of keys, laid out
+// in bricks of 8x8x8 cells.
+//
+// A ray-cast frame steps through millions of cells but touches far fewer
+// distinct ones, as rays from one origin cross the same cells near the
+// sensor.  OctoMap inserts every step into a hash set; here a step is one
+// OR into a bit.  Within a brick a step moves the bit by 1, 8 or 64, and a
+// brick is 64 bytes, so a ray stays in a cache line for several steps.
+// A brick is also the subtree of the map 3 levels above the leaves, which
+// is how frame_cells.hpp reads the cells out in the map's depth-first
+// order.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace octoprox {
+
+// A box of finest-cell keys, bounds included.
+struct KeyBox {
+    uint32_t lo[3] = {0, 0, 0};
+    uint32_t hi[3] = {0, 0, 0};
+    bool empty = true;
+
+    void grow(const uint32_t key[3]);
+    void grow(const KeyBox &other);
+    // Widened by `cells` on every side, kept within OctoMap's key range.
+    KeyBox padded(uint32_t cells) const;
+    // Cells inside, 0 when empty.
+    uint64_t volume() const;
+};
+
+namespace brick {
+constexpr int kShift = 3;  // 8 cells per axis
+constexpr uint32_t kMask = 7;
+constexpr int kBits = 512;
+constexpr int kWords = kBits / 64;
+}  // namespace brick
+
+class FrameMarks {
+public:
+    // Covers `box` (grown outwards to whole bricks), every mark cleared.
+    // Throws std::bad_alloc when the bitmaps do not fit in memory.
+    void reset(const KeyBox &box);
+    // The most cells a box may hold; larger frames take another way.
+    static constexpr uint64_t kMaxCells = uint64_t{1} << 31;
+
+    // Bit position of a key inside the box: the brick's index times 512
+    // plus x + 8 y + 64 z inside the brick.
+    uint64_t bit_of(const uint32_t key[3]) const {
+        uint64_t brick_index = 0, local = 0;
+        for (int axis = 2; axis >= 0; --axis) {
+            const uint32_t k = key[axis] - lo_[axis];
+            brick_index = brick_index * bricks_[axis] + (k >> brick::kShift);
+            local = (local << brick::kShift) | (k & brick::kMask);
+        }
+        return brick_index * brick::kBits + local;
+    }
+    // How a bit position moves when a key steps +1 along `axis` inside its
+    // brick, and when it steps into the next brick.
+    int64_t unit_step(int axis) const { return int64_t{1} << (brick::kShift * axis); }
+    int64_t brick_step(int axis) const { return brick_stride_[axis] * brick::kBits; }
+
+    // ORs another frame's crossed marks over the same box into these.
+    void merge_crossed(const FrameMarks &other);
+
+    void mark_crossed(uint64_t bit) { crossed_[bit >> 6] |= uint64_t{1} << (bit & 63); }
+    void mark_endpoint(uint64_t bit) { endpoint_[bit >> 6] |= uint64_t{1} << (bit & 63); }
+
+    const KeyBox &box() const { return box_; }  // as given to reset
+    const uint32_t *lowest_key() const { return lo_; }  // the first brick's lowest corner
+    const uint32_t *bricks_per_axis() const { return bricks_; }
+    size_t brick_count() const { return static_cast<size_t>(bricks_[0]) * bricks_[1] * bricks_[2]; }
+    const uint64_t *crossed(size_t brick_index) const { return &crossed_[brick_index * brick::kWords]; }
+    const uint64_t *endpoint(size_t brick_index) const { return &endpoint_[brick_index * brick::kWords]; }
+
+private:
+    KeyBox box_;
+    uint32_t lo_[3] = {0, 0, 0};
+    uint32_t bricks_[3] = {0, 0, 0};
+    int64_t brick_stride_[3] = {0, 0, 0};
+    // calloc'd: a large box costs memory only where rays pass (the kernel
+    // hands out zeroed pages on first touch).
+    struct FreeWords {
+        void operator()(uint64_t *words) const;
+    };
+    std::unique_ptr<uint64_t[], FreeWords> crossed_, endpoint_;
+    size_t words_ = 0;
+};
+
+}  // namespace octoprox

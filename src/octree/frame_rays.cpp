@@ -1,0 +1,128 @@
+// Built with -ffp-contract=off (src/CMakeLists.txt): the range test and the
+// cut ray's end use OctoMap's float arithmetic, unfused.
+#include "octree/frame_rays.hpp"
+
+#include "capi/error.hpp"
+#include "base/parallel.hpp"
+#include "octree/bounded_tree.hpp"
+
+#include <cmath>
+
+namespace octoprox {
+namespace {
+
+bool is_finite(const Vec3 &p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
+octomap::point3d to_float(const Vec3 &p) {
+    return octomap::point3d(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
+}
+
+// OctoMap's coordToKeyChecked, with the range tested on the double before
+// it becomes an int (OctoMap converts first: undefined for far points).
+class KeyMapper {
+public:
+    explicit KeyMapper(const BoundedOcTree &tree) : factor_(1.0 / tree.getResolution()) {}
+
+    bool key(const octomap::point3d &p, octomap::OcTreeKey &out) const {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double scaled = std::floor(factor_ * p(axis));
+            if (!(scaled >= -kHalf && scaled < kHalf)) return false;
+            out[axis] = static_cast<octomap::key_type>(static_cast<int>(scaled) + static_cast<int>(kHalf));
+        }
+        return true;
+    }
+
+private:
+    static constexpr double kHalf = 32768.0;  // OctoMap's tree_max_val
+    double factor_;
+};
+
+void add_ray(const octomap::point3d &end, const octomap::OcTreeKey &key, FrameRays &rays) {
+    rays.ends.push_back(end);
+    rays.end_keys.push_back(key);
+    const uint32_t k[3] = {key[0], key[1], key[2]};
+    rays.box.grow(k);
+}
+
+struct RayPart {
+    FrameRays rays;
+    InsertCounts counts;
+};
+
+// The rays of points [begin, end).
+void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
+                  const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
+    const bool limited = settings.max_range > 0.0 && std::isfinite(settings.max_range);
+    FrameRays &rays = part.rays;
+    InsertCounts &counts = part.counts;
+    rays.ends.reserve(end - begin);
+    rays.end_keys.reserve(end - begin);
+    rays.hit_keys.reserve(end - begin);
+    octomap::OcTreeKey key;
+    for (size_t i = begin; i < end; ++i) {
+        const Vec3 p_sensor = points.read(i);
+        if (!is_finite(p_sensor)) {
+            ++counts.nonfinite;
+            continue;
+        }
+        // OctoMap works in float: round once, then test the rounded point.
+        const octomap::point3d p = to_float(settings.sensor_pose.apply(p_sensor));
+        if (limited && !((p - origin).norm() <= settings.max_range)) {
+            ++counts.out_of_range;
+            if (!settings.raycast) continue;
+            const octomap::point3d cut = origin + (p - origin).normalized() * static_cast<float>(settings.max_range);
+            if (mapper.key(cut, key)) add_ray(cut, key, rays);
+            continue;
+        }
+        if (!mapper.key(p, key)) {
+            ++counts.outside_map;
+            continue;
+        }
+        add_ray(p, key, rays);
+        rays.hit_keys.push_back(key);
+        ++counts.used;
+    }
+}
+
+template <class T>
+void append(std::vector<T> &to, const std::vector<T> &from) {
+    to.insert(to.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, const InsertSettings &settings,
+                       size_t threads, InsertCounts &counts) {
+    const KeyMapper mapper(tree.octomap_tree());
+    const octomap::point3d origin = to_float(settings.sensor_pose.translation);
+    octomap::OcTreeKey origin_key;
+    const bool origin_inside = mapper.key(origin, origin_key);
+    if (settings.raycast && !origin_inside) throw_invalid("sensor_pose.position lies outside the map cube");
+
+    std::vector<RayPart> parts(threads);
+    run_tasks(threads, [&](size_t i) {
+        prepare_part(mapper, points, settings, origin, points.count * i / threads, points.count * (i + 1) / threads,
+                     parts[i]);
+    });
+    FrameRays rays = std::move(parts[0].rays);
+    rays.origin = origin;
+    if (settings.raycast) {
+        const uint32_t k[3] = {origin_key[0], origin_key[1], origin_key[2]};
+        rays.box.grow(k);
+    }
+    for (size_t i = 1; i < threads; ++i) {
+        append(rays.ends, parts[i].rays.ends);
+        append(rays.end_keys, parts[i].rays.end_keys);
+        append(rays.hit_keys, parts[i].rays.hit_keys);
+        rays.box.grow(parts[i].rays.box);
+    }
+    for (const RayPart &part : parts) {
+        counts.used += part.counts.used;
+        counts.nonfinite += part.counts.nonfinite;
+        counts.out_of_range += part.counts.out_of_range;
+        counts.outside_map += part.counts.outside_map;
+    }
+    return rays;
+}
+
+}  // namespace octoprox

@@ -1,0 +1,44 @@
+// What a ray walk starts from: OctoMap's per-axis face parameters for one
+// ray (computeRayKeys' initialisation, operation for operation) and how a
+// step along each axis moves the ray's bit in a FrameMarks.
+#pragma once
+
+#include "octree/frame_marks.hpp"
+
+#include <octomap/OcTreeKey.h>
+#include <octomap/octomap_types.h>
+
+namespace octoprox {
+
+class BoundedOcTree;
+
+struct RaySetup {
+    // The ray parameter (metres along the ray) of the next cell face on
+    // each axis, the parameter between two faces, the key step (-1, 0, 1).
+    double next_face[3];
+    double face_spacing[3];
+    int step[3];
+    float length;  // the ray parameter of the end point
+    double faces_per_metre[3];  // about 1 / face_spacing; 0 on an axis without steps
+};
+
+// OctoMap's computeRayKeys initialisation for origin -> end (keys differ).
+RaySetup ray_setup(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_key,
+                   const octomap::point3d &origin, const octomap::point3d &end);
+
+// How one step along an axis moves the mark's bit: x + 8 y + 64 z inside
+// a brick, the brick's index times 512 across bricks.
+struct BitMoves {
+    int64_t in_brick[3];      // staying inside the brick
+    int64_t brick_change[3];  // added to that when entering the next brick
+    uint64_t edge_mask[3];    // the bits of the in-brick coordinate along the axis
+    uint64_t edge_value[3];   // their value where a step leaves the brick
+};
+
+BitMoves bit_moves(const RaySetup &ray, const FrameMarks &marks);
+
+// Whether every key the walk can reach lies inside the marks' box, so that
+// no step needs a test.
+bool stays_in_box(const RaySetup &ray, const uint32_t origin[3], const FrameMarks &marks);
+
+}  // namespace octoprox

@@ -1,0 +1,41 @@
+// Stepping rays through the map's cells, cell for cell the ones OctoMap's
+// computeRayKeys returns (Amanatides & Woo's 3-D DDA with OctoMap's float
+// and double arithmetic and its order of comparisons, so ties between
+// axes and rays along faces, axes and diagonals go the same way), marked
+// in a FrameMarks instead of collected in a list.
+#pragma once
+
+#include "octree/frame_marks.hpp"
+
+#include <octomap/OcTreeKey.h>
+#include <octomap/octomap_types.h>
+
+#include <vector>
+
+namespace octoprox {
+
+class BoundedOcTree;
+
+class RayWalker {
+public:
+    // The origin must lie inside the map.
+    RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin);
+
+    // Marks as crossed, for rays [begin, end) of `ends`, the cells from the
+    // origin's cell up to, not including, the end's cell (`end_keys` the
+    // ends' keys).  A ray that might leave the marks' box (along the map's
+    // outer faces) is not walked: its index goes to `strays`, for OctoMap's
+    // computeRayKeys.
+    void walk(const std::vector<octomap::point3d> &ends, const std::vector<octomap::OcTreeKey> &end_keys,
+              size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays) const;
+
+private:
+    const BoundedOcTree &tree_;
+    octomap::point3d origin_;
+    octomap::OcTreeKey origin_key_;
+};
+
+// The key of a point inside the map, as OctoMap computes it.
+octomap::OcTreeKey key_of(const BoundedOcTree &tree, const octomap::point3d &point);
+
+}  // namespace octoprox
