@@ -1,11 +1,16 @@
 // opx-bench-ingest: how fast one 640x480 frame goes into an occupancy map,
-// OctoProx against OctoMap's own insertPointCloud, on fresh trees.
+// OctoProx (1 and 2 threads) against OctoMap's own insertPointCloud: the
+// first frame into a fresh map, and a later frame (the same frame into a
+// map that holds it once).  Ray-cast rows carry the frame's ray steps and
+// distinct cells, and the time per step.
 //
 //   opx-bench-ingest [--reps N] [--quick] [--generated] [--data DIR] [--json FILE]
 #include "bench_frame.hpp"
 #include "bench_pipelines.hpp"
 
 #include <octoprox/octoprox.h>
+
+#include <cstdint>
 
 #include <cstdio>
 #include <cstdlib>
@@ -30,9 +35,13 @@ struct Args {
 struct Row {
     double resolution;
     const char *mode;
+    const char *frame;  // "first" (fresh map) or "later"
     bench::Pipeline pipeline;
     bench::RunResult result;
-    double ratio;  // octoprox ms / this row's ms; 0 for the octoprox row
+    double ratio;             // octoprox (1 thread) ms / this row's ms; 0 for that row
+    double octomap_over_this; // OctoMap insertPointCloud ms / this row's ms (ray-cast rows)
+    bench::RayWork work;      // ray-cast rows
+    double ns_per_step() const { return work.steps ? result.median_ms() * 1e6 / double(work.steps) : 0.0; }
 };
 
 [[noreturn]] void usage(const char *program, int status) {
@@ -67,60 +76,83 @@ Args parse_args(int argc, char **argv) {
     return args;
 }
 
-// The rows of one resolution: ray-cast and endpoints, ours then OctoMap's.
+// The rows of one resolution: ray-cast (first and later frame) and
+// endpoints, ours then OctoMap's.
 void run_resolution(const bench::Frame &frame, double resolution, int reps, std::vector<Row> &rows) {
     using bench::Pipeline;
     struct Plan {
         const char *mode;
-        bool raycast;
+        const char *frame;
+        bool raycast, later;
         std::vector<Pipeline> references;
     };
-    const Plan plans[] = {{"raycast", true, {Pipeline::kOctomap, Pipeline::kOctomapDiscretize}},
-                          {"endpoints", false, {Pipeline::kOctomapEndpoints}}};
+    const Plan plans[] = {
+        {"raycast", "first", true, false, {Pipeline::kOctomap, Pipeline::kOctomapDiscretize}},
+        {"raycast", "later", true, true, {Pipeline::kOctomap}},
+        {"endpoints", "first", false, false, {Pipeline::kOctomapEndpoints}}};
+    const bench::RayWork work = bench::ray_work(frame, resolution);
     for (const Plan &plan : plans) {
-        std::vector<Pipeline> pipelines = {Pipeline::kOctoprox};
+        std::vector<Pipeline> pipelines = {Pipeline::kOctoprox, Pipeline::kOctoproxTwoThreads};
         pipelines.insert(pipelines.end(), plan.references.begin(), plan.references.end());
         const std::vector<bench::RunResult> results =
-            bench::run_interleaved(pipelines, frame, resolution, plan.raycast, reps);
+            bench::run_interleaved(pipelines, frame, resolution, plan.raycast, plan.later, reps);
         const double ours_ms = results[0].median_ms();
+        const double octomap_ms = plan.raycast ? results[2].median_ms() : 0.0;
         for (size_t i = 0; i < pipelines.size(); ++i) {
-            const double ratio = i == 0 ? 0.0 : ours_ms / results[i].median_ms();
-            rows.push_back({resolution, plan.mode, pipelines[i], results[i], ratio});
+            const double ms = results[i].median_ms();
+            const double ratio = i == 0 ? 0.0 : ours_ms / ms;
+            rows.push_back({resolution, plan.mode, plan.frame, pipelines[i], results[i], ratio,
+                            plan.raycast ? octomap_ms / ms : 0.0, plan.raycast ? work : bench::RayWork{}});
         }
     }
 }
 
 void print_table(const std::vector<Row> &rows, int reps) {
-    std::printf("\n%-6s %-10s %-36s %10s %10s %10s %9s %11s %14s\n", "res", "mode", "pipeline", "ms/frame",
-                "occupied", "free", "B/leaf", "heap B/leaf", "octoprox/this");
-    std::printf("%-6s %-10s %-36s %10s\n", "", "", "", reps > 1 ? "(median)" : "(1 rep)");
+    std::printf("\n%-6s %-10s %-6s %-36s %10s %9s %9s %9s %11s %9s %10s\n", "res", "mode", "frame", "pipeline",
+                "ms/frame", "occupied", "free", "B/leaf", "heap B/leaf", "ns/step", "octomap/x");
+    std::printf("%-6s %-10s %-6s %-36s %10s\n", "", "", "", "", reps > 1 ? "(median)" : "(1 rep)");
     for (const Row &r : rows) {
-        char ratio[32] = "-";
-        if (r.ratio > 0) std::snprintf(ratio, sizeof ratio, "%.2f", r.ratio);
-        std::printf("%-6s %-10s %-36s %10.1f %10llu %10llu %9.1f %11.1f %14s\n",
-                    (std::to_string(int(r.resolution * 100 + 0.5)) + "cm").c_str(), r.mode,
+        char speedup[32] = "-", per_step[32] = "-";
+        if (r.octomap_over_this > 0) std::snprintf(speedup, sizeof speedup, "%.2f", r.octomap_over_this);
+        if (r.work.steps > 0) std::snprintf(per_step, sizeof per_step, "%.2f", r.ns_per_step());
+        std::printf("%-6s %-10s %-6s %-36s %10.1f %9llu %9llu %9.1f %11.1f %9s %10s\n",
+                    (std::to_string(int(r.resolution * 100 + 0.5)) + "cm").c_str(), r.mode, r.frame,
                     bench::pipeline_name(r.pipeline), r.result.median_ms(), (unsigned long long)r.result.occupied,
                     (unsigned long long)r.result.free, r.result.bytes_per_leaf(), r.result.heap_bytes_per_leaf(),
-                    ratio);
+                    per_step, speedup);
     }
+    std::printf("\nray-cast work per frame (OctoMap's computeRayKeys):\n");
+    for (const Row &r : rows)
+        if (r.work.steps > 0 && r.pipeline == bench::Pipeline::kOctoprox && std::string(r.frame) == "first")
+            std::printf("  %2d cm: %llu ray steps, %llu distinct cells\n", int(r.resolution * 100 + 0.5),
+                        (unsigned long long)r.work.steps, (unsigned long long)r.work.distinct_cells);
 }
 
-void write_json(const std::string &path, const std::vector<Row> &rows, const bench::Frame &frame, int reps) {
+std::string json_number(double value) { return value > 0 ? std::to_string(value) : "null"; }
+
+void write_json(const std::string &path, const std::vector<Row> &rows, const bench::Frame &frame, int reps,
+                const std::string &cpu) {
     std::FILE *out = std::fopen(path.c_str(), "w");
     if (out == nullptr) throw std::runtime_error("cannot write " + path);
     std::fprintf(out, "[\n");
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row &r = rows[i];
+        const bool two = r.pipeline == bench::Pipeline::kOctoproxTwoThreads;
         std::fprintf(out,
-                     "  {\"resolution\": %g, \"mode\": \"%s\", \"pipeline\": \"%s\", \"median_ms\": %.3f, "
-                     "\"reps\": %d, \"occupied\": %llu, \"free\": %llu, \"memory_bytes\": %llu, "
-                     "\"bytes_per_leaf\": %.2f, \"heap_bytes\": %llu, \"heap_bytes_per_leaf\": %.2f, "
-                     "\"octoprox_over_this\": %s, \"points\": %zu, \"finite_points\": %zu}%s\n",
-                     r.resolution, r.mode, bench::pipeline_name(r.pipeline), r.result.median_ms(), reps,
-                     (unsigned long long)r.result.occupied, (unsigned long long)r.result.free,
-                     (unsigned long long)r.result.memory_bytes, r.result.bytes_per_leaf(),
-                     (unsigned long long)r.result.heap_bytes, r.result.heap_bytes_per_leaf(), r.ratio > 0 ? std::to_string(r.ratio).c_str() : "null", frame.count, frame.finite_count,
-                     i + 1 < rows.size() ? "," : "");
+                     "  {\"resolution\": %g, \"mode\": \"%s\", \"frame\": \"%s\", \"pipeline\": \"%s\", "
+                     "\"threads\": %d, \"median_ms\": %.3f, \"reps\": %d, \"occupied\": %llu, \"free\": %llu, "
+                     "\"memory_bytes\": %llu, \"bytes_per_leaf\": %.2f, \"heap_bytes\": %llu, "
+                     "\"heap_bytes_per_leaf\": %.2f, \"octoprox_over_this\": %s, \"octomap_over_this\": %s, "
+                     "\"ray_steps\": %llu, \"distinct_cells\": %llu, \"ns_per_step\": %s, "
+                     "\"points\": %zu, \"finite_points\": %zu, \"cpu\": \"%s\"}%s\n",
+                     r.resolution, r.mode, r.frame, bench::pipeline_name(r.pipeline), two ? 2 : 1,
+                     r.result.median_ms(), reps, (unsigned long long)r.result.occupied,
+                     (unsigned long long)r.result.free, (unsigned long long)r.result.memory_bytes,
+                     r.result.bytes_per_leaf(), (unsigned long long)r.result.heap_bytes,
+                     r.result.heap_bytes_per_leaf(), json_number(r.ratio).c_str(),
+                     json_number(r.octomap_over_this).c_str(), (unsigned long long)r.work.steps,
+                     (unsigned long long)r.work.distinct_cells, json_number(r.ns_per_step()).c_str(), frame.count,
+                     frame.finite_count, cpu.c_str(), i + 1 < rows.size() ? "," : "");
     }
     std::fprintf(out, "]\n");
     std::fclose(out);
@@ -158,7 +190,7 @@ int main(int argc, char **argv) {
         if (!args.quick) run_resolution(frame, 0.02, args.reps, rows);
         print_table(rows, args.reps);
         if (!args.json_path.empty()) {
-            write_json(args.json_path, rows, frame, args.reps);
+            write_json(args.json_path, rows, frame, args.reps, cpu_name());
             std::printf("\nrows written to %s\n", args.json_path.c_str());
         }
         std::printf("\ncpu: %s\npeak RSS: %.1f MiB\n", cpu_name().c_str(), peak_rss_kib() / 1024.0);

@@ -27,7 +27,8 @@ void check(opx_status status, const char *what) {
 }
 
 // One OctoProx insert on a fresh tree; the stats of the last one are kept.
-double insert_octoprox(const Frame &frame, double resolution, bool raycast, RunResult *keep_stats) {
+double insert_octoprox(const Frame &frame, double resolution, bool raycast, uint32_t threads, bool later,
+                       RunResult *keep_stats) {
     opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
     options.resolution = resolution;
     opx_octree *tree = nullptr;
@@ -35,8 +36,12 @@ double insert_octoprox(const Frame &frame, double resolution, bool raycast, RunR
     const uint64_t heap_before = heap_live_bytes();  // the empty map's buffers (OctoMap's key ray) not counted
     opx_insert_options insert = OPX_INSERT_OPTIONS_INIT;
     insert.mode = raycast ? OPX_INSERT_RAYCAST : OPX_INSERT_ENDPOINTS;
+    insert.max_threads = threads;
     std::memcpy(insert.sensor_pose.position, frame.position, sizeof frame.position);
     std::memcpy(insert.sensor_pose.orientation, frame.quaternion_xyzw, sizeof frame.quaternion_xyzw);
+    if (later)
+        check(opx_octree_insert_points(tree, frame.xyz.data(), frame.count, 0, OPX_SCALAR_FLOAT32, &insert, nullptr),
+              "opx_octree_insert_points");
     const Clock::time_point start = Clock::now();
     check(opx_octree_insert_points(tree, frame.xyz.data(), frame.count, 0, OPX_SCALAR_FLOAT32, &insert, nullptr),
           "opx_octree_insert_points");
@@ -62,18 +67,21 @@ void keep_octomap_stats(const octomap::OcTree &tree, RunResult *out) {
     out->memory_bytes = tree.memoryUsage();
 }
 
-double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, RunResult *keep_stats) {
+void octomap_frame(Pipeline pipeline, const Frame &frame, octomap::OcTree &tree) {
+    const octomap::Pointcloud cloud = map_frame_cloud(frame);
+    const octomap::point3d origin(float(frame.position[0]), float(frame.position[1]), float(frame.position[2]));
+    if (pipeline == Pipeline::kOctomapEndpoints)
+        insert_endpoints(tree, cloud);
+    else
+        tree.insertPointCloud(cloud, origin, -1.0, false, pipeline == Pipeline::kOctomapDiscretize);
+}  // the cloud freed inside the timing, as our insert frees its own copies
+
+double insert_octomap(Pipeline pipeline, const Frame &frame, double resolution, bool later, RunResult *keep_stats) {
     octomap::OcTree tree(resolution);
     const uint64_t heap_before = heap_live_bytes();  // as for OctoProx: the empty tree's key ray not counted
+    if (later) octomap_frame(pipeline, frame, tree);
     const Clock::time_point start = Clock::now();
-    {
-        const octomap::Pointcloud cloud = map_frame_cloud(frame);
-        const octomap::point3d origin(float(frame.position[0]), float(frame.position[1]), float(frame.position[2]));
-        if (pipeline == Pipeline::kOctomapEndpoints)
-            insert_endpoints(tree, cloud);
-        else
-            tree.insertPointCloud(cloud, origin, -1.0, false, pipeline == Pipeline::kOctomapDiscretize);
-    }  // the cloud freed inside the timing, as our insert frees its own copies
+    octomap_frame(pipeline, frame, tree);
     const double ms = elapsed_ms(start);
     if (keep_stats != nullptr) {
         keep_stats->heap_bytes = heap_live_bytes() - heap_before;
@@ -117,6 +125,7 @@ void insert_endpoints(octomap::OcTree &tree, const octomap::Pointcloud &cloud) {
 const char *pipeline_name(Pipeline pipeline) {
     switch (pipeline) {
     case Pipeline::kOctoprox: return "octoprox";
+    case Pipeline::kOctoproxTwoThreads: return "octoprox 2 threads";
     case Pipeline::kOctomap: return "octomap insertPointCloud";
     case Pipeline::kOctomapDiscretize: return "octomap insertPointCloud discretize";
     case Pipeline::kOctomapEndpoints: return "octomap KeySet + updateNode";
@@ -133,18 +142,34 @@ double RunResult::median_ms() const {
 }
 
 std::vector<RunResult> run_interleaved(const std::vector<Pipeline> &pipelines, const Frame &frame,
-                                       double resolution, bool raycast, int reps) {
+                                       double resolution, bool raycast, bool later, int reps) {
     std::vector<RunResult> results(pipelines.size());
     for (int rep = 0; rep < reps; ++rep) {
         for (size_t i = 0; i < pipelines.size(); ++i) {
             RunResult *keep = rep + 1 == reps ? &results[i] : nullptr;
-            const double ms = pipelines[i] == Pipeline::kOctoprox
-                                  ? insert_octoprox(frame, resolution, raycast, keep)
-                                  : insert_octomap(pipelines[i], frame, resolution, keep);
+            const Pipeline p = pipelines[i];
+            const bool ours = p == Pipeline::kOctoprox || p == Pipeline::kOctoproxTwoThreads;
+            const double ms = ours ? insert_octoprox(frame, resolution, raycast,
+                                                     p == Pipeline::kOctoproxTwoThreads ? 2 : 1, later, keep)
+                                   : insert_octomap(p, frame, resolution, later, keep);
             results[i].insert_ms.push_back(ms);
         }
     }
     return results;
+}
+
+RayWork ray_work(const Frame &frame, double resolution) {
+    octomap::OcTree tree(resolution);
+    const octomap::Pointcloud cloud = map_frame_cloud(frame);
+    const octomap::point3d origin(float(frame.position[0]), float(frame.position[1]), float(frame.position[2]));
+    RayWork work;
+    octomap::KeyRay ray;
+    for (const octomap::point3d &p : cloud)
+        if (tree.computeRayKeys(origin, p, ray)) work.steps += ray.size();
+    octomap::KeySet free_cells, occupied_cells;
+    tree.computeUpdate(cloud, origin, free_cells, occupied_cells, -1.0);
+    work.distinct_cells = free_cells.size() + occupied_cells.size();
+    return work;
 }
 
 }  // namespace bench

@@ -12,7 +12,8 @@
 namespace bench {
 
 enum class Pipeline {
-    kOctoprox,            // opx_octree_insert_points (mode chosen by the row)
+    kOctoprox,            // opx_octree_insert_points (mode chosen by the row), 1 thread
+    kOctoproxTwoThreads,  // the same with max_threads 2
     kOctomap,             // OcTree::insertPointCloud, discretize = false
     kOctomapDiscretize,   // OcTree::insertPointCloud, discretize = true
     kOctomapEndpoints,    // a KeySet of endpoint cells, then updateNode(key, true)
@@ -46,7 +47,17 @@ octomap::Pointcloud map_frame_cloud(const Frame &frame);
 // one updateNode(key, hit) per cell (the baseline of OPX_INSERT_ENDPOINTS).
 void insert_endpoints(octomap::OcTree &tree, const octomap::Pointcloud &cloud);
 
+// later: each timed insert goes into a map that already holds the frame
+// once (the second frame of a stream), else into a fresh map.
 std::vector<RunResult> run_interleaved(const std::vector<Pipeline> &pipelines, const Frame &frame,
-                                       double resolution, bool raycast, int reps);
+                                       double resolution, bool raycast, bool later, int reps);
+
+// What a ray-cast frame asks of a mapper: the cells its rays step through
+// (OctoMap's computeRayKeys, summed over the rays) and the distinct cells
+// they and the endpoints touch.
+struct RayWork {
+    uint64_t steps = 0, distinct_cells = 0;
+};
+RayWork ray_work(const Frame &frame, double resolution);
 
 }  // namespace bench
