@@ -20,6 +20,7 @@ paper_tables::OpxOctreePtr make_tree(double resolution) {
 void insert(opx_octree *tree, const bench::Frame &frame, int32_t mode) {
     opx_insert_options insert = OPX_INSERT_OPTIONS_INIT;
     insert.mode = mode;
+    insert.max_threads = 0;  // every core: a workstation's setting (FCL and OctoMap have one thread)
     for (int i = 0; i < 3; ++i) insert.sensor_pose.position[i] = frame.position[i];
     for (int i = 0; i < 4; ++i) insert.sensor_pose.orientation[i] = frame.quaternion_xyzw[i];
     check_opx(opx_octree_insert_points(tree, frame.xyz.data(), frame.count, 0, OPX_SCALAR_FLOAT32, &insert, nullptr),

@@ -45,8 +45,9 @@ public:
     // Covers `box` (grown outwards to whole bricks), every mark cleared.
     // Throws std::bad_alloc when the bitmaps do not fit in memory.
     void reset(const KeyBox &box);
-    // The most cells a box may hold; larger frames take another way.
-    static constexpr uint64_t kMaxCells = uint64_t{1} << 31;
+    // The most cells a box may hold (128 MiB a bitmap, mostly untouched);
+    // larger frames take another way.
+    static constexpr uint64_t kMaxCells = uint64_t{1} << 30;
 
     // Bit position of a key inside the box: the brick's index times 512
     // plus x + 8 y + 64 z inside the brick.

@@ -78,7 +78,27 @@ std::vector<uint64_t> stray_cells(const BoundedOcTree &tree, const FrameRays &ra
     return cells;
 }
 
+// Frames whose rays span more cells than bitmaps should cover (points
+// hundreds of metres apart at a fine resolution) take OctoMap's way: a set
+// of keys per ray step, then sorted.
+FrameCells keyset_cells(const BoundedOcTree &tree, const FrameRays &rays, bool raycast) {
+    octomap::KeySet free_cells, occupied_cells(rays.hit_keys.begin(), rays.hit_keys.end());
+    octomap::KeyRay ray;
+    if (raycast)
+        for (const octomap::point3d &end : rays.ends)
+            if (tree.computeRayKeys(rays.origin, end, ray)) free_cells.insert(ray.begin(), ray.end());
+    std::vector<uint64_t> cells;
+    cells.reserve(free_cells.size() + occupied_cells.size());
+    for (const octomap::OcTreeKey &key : occupied_cells)
+        cells.push_back(morton_encode(key[0], key[1], key[2]) | FrameCells::kHitBit);
+    for (const octomap::OcTreeKey &key : free_cells) cells.push_back(morton_encode(key[0], key[1], key[2]));
+    FrameMarks none;
+    none.reset(KeyBox());
+    return collect_cells(none, std::move(cells));
+}
+
 FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint32_t max_threads) {
+    if (rays.box.padded(kBoxPadding).volume() > FrameMarks::kMaxCells) return keyset_cells(tree, rays, true);
     std::vector<RayWorker> workers(task_count(max_threads, (rays.ends.size() + kRaysPerChunk - 1) / kRaysPerChunk));
     RayCast cast(tree, rays, rays.box.padded(kBoxPadding));
     run_tasks(workers.size(), [&](size_t i) { cast.run(workers[i]); });
@@ -88,7 +108,8 @@ FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint3
     return collect_cells(marks, stray_cells(tree, rays, workers));
 }
 
-FrameCells endpoint_cells(const FrameRays &rays) {
+FrameCells endpoint_cells(const BoundedOcTree &tree, const FrameRays &rays) {
+    if (rays.box.volume() > FrameMarks::kMaxCells) return keyset_cells(tree, rays, false);
     FrameMarks marks;
     marks.reset(rays.box);
     mark_endpoints(rays, marks);
@@ -102,7 +123,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     const FrameRays rays =
         prepare_rays(*this, points, settings, task_count(settings.max_threads, points.count / 4096 + 1), counts);
     const FrameCells cells =
-        settings.raycast ? raycast_cells(*tree_, rays, settings.max_threads) : endpoint_cells(rays);
+        settings.raycast ? raycast_cells(*tree_, rays, settings.max_threads) : endpoint_cells(*tree_, rays);
     // Everything that may allocate happens above or here: the cell updates
     // below take their nodes from reserved blocks, so a frame goes into the
     // map whole or, out of memory, not at all.  (An empty map's root is made

@@ -162,6 +162,22 @@ void test_map_edge(void **) {
     opx_octree_destroy(ours);
 }
 
+// Points hundreds of metres apart at 2 cm: the rays span more cells than
+// the per-frame bitmaps cover, and the insert takes OctoMap's way.
+void test_far_points(void **) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> across(-600.0f, 600.0f);
+    Frame frame;
+    frame.origin = octomap::point3d(0.1f, 0.2f, 0.3f);
+    for (int i = 0; i < 60; ++i) frame.points.emplace_back(across(rng), across(rng), across(rng) * 0.1f);
+    for (int i = 0; i < 200; ++i) frame.points.emplace_back(across(rng) * 0.002f, across(rng) * 0.002f, 1.0f);
+    opx_octree *ours = new_map(0.02);
+    octomap::OcTree theirs(0.02);
+    insert_both(ours, theirs, frame, -1.0, 2, "far points");
+    insert_both(ours, theirs, frame, 100.0, 1, "far points cut at 100 m");
+    opx_octree_destroy(ours);
+}
+
 // OctoMap writes a map, OctoProx loads it, and both take the next frame.
 void check_loaded(bool binary) {
     std::mt19937 rng(99);
@@ -209,6 +225,7 @@ int main() {
         cmocka_unit_test(test_ties),          cmocka_unit_test(test_room),
         cmocka_unit_test(test_loaded_bt),     cmocka_unit_test(test_loaded_ot),
         cmocka_unit_test(test_thread_counts), cmocka_unit_test(test_map_edge),
+        cmocka_unit_test(test_far_points),
     };
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
