@@ -1,5 +1,6 @@
 /* Point clouds from .pcd and .ply files: see cloud_file.h. */
 #include "cloud_file.h"
+#include "file_extension.h"
 
 #include "pcd_reader.h"
 #include "ply_reader.h"
@@ -9,22 +10,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int has_extension(const char *path, const char *extension) {
-    const size_t n = strlen(path), m = strlen(extension);
-    size_t i;
-    if (n < m) return 0;
-    for (i = 0; i < m; ++i)
-        if (tolower((unsigned char)path[n - m + i]) != extension[i]) return 0;
-    return 1;
-}
-
 int cloud_file_supported(const char *path) {
-    return path != NULL && (has_extension(path, ".pcd") || has_extension(path, ".ply"));
+    return path != NULL && (file_has_extension(path, ".pcd") || file_has_extension(path, ".ply"));
 }
 
 int cloud_read_file(const char *path, cloud_points *out, char *error, size_t error_size) {
     memset(out, 0, sizeof *out);
-    if (has_extension(path, ".pcd")) {
+    if (file_has_extension(path, ".pcd")) {
         pcd_cloud pcd;
         if (pcd_read_file(path, &pcd, error, error_size) != 0) return -1;
         out->xyz = pcd.xyz;
@@ -33,7 +25,7 @@ int cloud_read_file(const char *path, cloud_points *out, char *error, size_t err
         snprintf(out->format, sizeof out->format, "pcd %s", pcd.data_format);
         return 0;
     }
-    if (has_extension(path, ".ply")) {
+    if (file_has_extension(path, ".ply")) {
         ply_cloud ply;
         if (ply_read_file(path, &ply, error, error_size) != 0) return -1;
         out->xyz = ply.xyz;

@@ -1,5 +1,6 @@
 /* Depth images from PNG and TIFF files: see depth_image.h. */
 #include "depth_image.h"
+#include "file_extension.h"
 
 #include "cloud_io.h"
 #include "depth_formats.h"
@@ -10,18 +11,9 @@
 
 static const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
-static int has_extension(const char *path, const char *extension) {
-    const size_t n = strlen(path), m = strlen(extension);
-    size_t i;
-    if (n < m) return 0;
-    for (i = 0; i < m; ++i)
-        if (tolower((unsigned char)path[n - m + i]) != extension[i]) return 0;
-    return 1;
-}
-
 int depth_image_file_supported(const char *path) {
     return path != NULL &&
-           (has_extension(path, ".png") || has_extension(path, ".tif") || has_extension(path, ".tiff"));
+           (file_has_extension(path, ".png") || file_has_extension(path, ".tif") || file_has_extension(path, ".tiff"));
 }
 
 /* Classic and BigTIFF headers, either byte order. */
