@@ -39,6 +39,54 @@ bool is_empty(const uint64_t *words) {
     return any == 0;
 }
 
+// For each axis and coordinate 0..7 inside a brick, the Morton-ordered
+// bits of the cells with that coordinate.
+using PlaneMasks = std::array<std::array<std::array<uint64_t, brick::kWords>, 8>, 3>;
+
+const PlaneMasks &plane_masks() {
+    static const PlaneMasks masks = [] {
+        PlaneMasks m{};
+        for (uint32_t z = 0; z < 8; ++z)
+            for (uint32_t y = 0; y < 8; ++y)
+                for (uint32_t x = 0; x < 8; ++x) {
+                    const uint64_t bit = morton_encode(x, y, z);
+                    const uint32_t coordinate[3] = {x, y, z};
+                    for (int axis = 0; axis < 3; ++axis)
+                        m[axis][coordinate[axis]][bit >> 6] |= uint64_t{1} << (bit & 63);
+                }
+        return m;
+    }();
+    return masks;
+}
+
+bool any_in_plane(const uint64_t bits[brick::kWords], int axis, uint32_t coordinate) {
+    const auto &mask = plane_masks()[axis][coordinate];
+    uint64_t any = 0;
+    for (int w = 0; w < brick::kWords; ++w) any |= bits[w] & mask[w];
+    return any != 0;
+}
+
+// Grows the box by a brick's cells (Morton-ordered bits, at least one
+// set), looking inside the brick only on an axis where it could move a
+// face of the box.
+void grow_by_brick(KeyBox &box, uint64_t brick_code, const uint64_t bits[brick::kWords]) {
+    uint32_t corner[3];
+    morton_decode(brick_code, corner[0], corner[1], corner[2]);
+    uint32_t lo[3], hi[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        uint32_t first = 0, last = brick::kMask;
+        const uint32_t base = corner[axis] << brick::kShift;
+        if (box.empty || base < box.lo[axis])
+            while (!any_in_plane(bits, axis, first)) ++first;
+        if (box.empty || base + brick::kMask > box.hi[axis])
+            while (!any_in_plane(bits, axis, last)) --last;
+        lo[axis] = base + first;
+        hi[axis] = base + last;
+    }
+    box.grow(lo);
+    box.grow(hi);
+}
+
 // Emits one brick's cells in Morton order and grows the box by them.
 void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *endpoint, FrameCells &out) {
     uint64_t hit[brick::kWords], any[brick::kWords];
@@ -54,24 +102,18 @@ void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *en
             ++(is_hit ? out.hits : out.misses);
         }
     }
-}
-
-// The box of the emitted cells, from the first and last cells along each
-// axis: exact, and cheap next to the cells themselves.
-KeyBox box_of(const std::vector<uint64_t> &cells) {
-    KeyBox box;
-    for (const uint64_t cell : cells) {
-        uint32_t key[3];
-        morton_decode(FrameCells::code(cell), key[0], key[1], key[2]);
-        box.grow(key);
-    }
-    return box;
+    grow_by_brick(out.box, brick_code, any);
 }
 
 // Cells found outside the marks join the sorted list: sorted, merged with
 // it, and each cell kept once (an endpoint wins).
 void merge_extra(FrameCells &out, std::vector<uint64_t> extra) {
     if (extra.empty()) return;
+    for (const uint64_t cell : extra) {
+        uint32_t key[3];
+        morton_decode(FrameCells::code(cell), key[0], key[1], key[2]);
+        out.box.grow(key);
+    }
     extra.insert(extra.end(), out.cells.begin(), out.cells.end());
     std::sort(extra.begin(), extra.end(), [](uint64_t a, uint64_t b) {
         return FrameCells::code(a) != FrameCells::code(b) ? FrameCells::code(a) < FrameCells::code(b) : a > b;
@@ -112,7 +154,12 @@ FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra) {
     for (size_t i = 0; i < codes.size(); ++i)
         emit_brick(codes[i], marks.crossed(bricks[i]), marks.endpoint(bricks[i]), out);
     merge_extra(out, std::move(extra));
-    out.box = box_of(out.cells);
+    return out;
+}
+
+FrameCells sorted_cells(std::vector<uint64_t> cells) {
+    FrameCells out;
+    merge_extra(out, std::move(cells));
     return out;
 }
 

@@ -26,5 +26,7 @@ struct FrameCells {
 // `extra` holds cells found outside the marks (Morton code, kHitBit for an
 // endpoint), in any order, duplicates allowed.
 FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra);
+// The same for cells found without marks alone.
+FrameCells sorted_cells(std::vector<uint64_t> cells);
 
 }  // namespace octoprox

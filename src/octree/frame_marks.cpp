@@ -43,7 +43,6 @@ uint64_t KeyBox::volume() const {
 }
 
 void FrameMarks::reset(const KeyBox &box) {
-    box_ = box;
     for (int axis = 0; axis < 3; ++axis) {
         lo_[axis] = box.empty ? 0 : box.lo[axis] & ~brick::kMask;
         bricks_[axis] = box.empty ? 0 : ((box.hi[axis] - lo_[axis]) >> brick::kShift) + 1;
@@ -54,9 +53,16 @@ void FrameMarks::reset(const KeyBox &box) {
     words_ = brick_count() * brick::kWords;
     crossed_.reset();
     endpoint_.reset();
-    crossed_.reset(static_cast<uint64_t *>(std::calloc(std::max<size_t>(words_, 1), sizeof(uint64_t))));
-    endpoint_.reset(static_cast<uint64_t *>(std::calloc(std::max<size_t>(words_, 1), sizeof(uint64_t))));
-    if (crossed_ == nullptr || endpoint_ == nullptr) throw std::bad_alloc();
+    crossed_ = cleared_words(words_);
+}
+
+void FrameMarks::add_endpoint_marks() { endpoint_ = cleared_words(words_); }
+
+std::unique_ptr<uint64_t[], FrameMarks::FreeWords> FrameMarks::cleared_words(size_t words) {
+    std::unique_ptr<uint64_t[], FreeWords> out(
+        static_cast<uint64_t *>(std::calloc(std::max<size_t>(words, 1), sizeof(uint64_t))));
+    if (out == nullptr) throw std::bad_alloc();
+    return out;
 }
 
 void FrameMarks::FreeWords::operator()(uint64_t *words) const { std::free(words); }

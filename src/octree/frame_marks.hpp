@@ -42,9 +42,13 @@ constexpr int kWords = kBits / 64;
 
 class FrameMarks {
 public:
-    // Covers `box` (grown outwards to whole bricks), every mark cleared.
-    // Throws std::bad_alloc when the bitmaps do not fit in memory.
+    // Covers `box` (grown outwards to whole bricks) with crossed marks, all
+    // cleared.  Throws std::bad_alloc when the bitmap does not fit in memory.
     void reset(const KeyBox &box);
+    // Adds the endpoint marks, cleared, over the same box: only the marks
+    // the frame's cells are read from need them (one per frame, not one
+    // per thread).  Throws std::bad_alloc as reset.
+    void add_endpoint_marks();
     // The most cells a box may hold (128 MiB a bitmap, mostly untouched);
     // larger frames take another way.
     static constexpr uint64_t kMaxCells = uint64_t{1} << 30;
@@ -69,17 +73,18 @@ public:
     void merge_crossed(const FrameMarks &other);
 
     void mark_crossed(uint64_t bit) { crossed_[bit >> 6] |= uint64_t{1} << (bit & 63); }
+    // After add_endpoint_marks.
     void mark_endpoint(uint64_t bit) { endpoint_[bit >> 6] |= uint64_t{1} << (bit & 63); }
 
-    const KeyBox &box() const { return box_; }  // as given to reset
     const uint32_t *lowest_key() const { return lo_; }  // the first brick's lowest corner
     const uint32_t *bricks_per_axis() const { return bricks_; }
     size_t brick_count() const { return static_cast<size_t>(bricks_[0]) * bricks_[1] * bricks_[2]; }
     const uint64_t *crossed(size_t brick_index) const { return &crossed_[brick_index * brick::kWords]; }
-    const uint64_t *endpoint(size_t brick_index) const { return &endpoint_[brick_index * brick::kWords]; }
+    const uint64_t *endpoint(size_t brick_index) const {  // after add_endpoint_marks
+        return &endpoint_[brick_index * brick::kWords];
+    }
 
 private:
-    KeyBox box_;
     uint32_t lo_[3] = {0, 0, 0};
     uint32_t bricks_[3] = {0, 0, 0};
     int64_t brick_stride_[3] = {0, 0, 0};
@@ -88,6 +93,7 @@ private:
     struct FreeWords {
         void operator()(uint64_t *words) const;
     };
+    static std::unique_ptr<uint64_t[], FreeWords> cleared_words(size_t words);
     std::unique_ptr<uint64_t[], FreeWords> crossed_, endpoint_;
     size_t words_ = 0;
 };

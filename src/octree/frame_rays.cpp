@@ -5,6 +5,7 @@
 #include "capi/error.hpp"
 #include "base/parallel.hpp"
 #include "octree/bounded_tree.hpp"
+#include "octree/octree_view.hpp"
 
 #include <cmath>
 
@@ -33,7 +34,7 @@ public:
     }
 
 private:
-    static constexpr double kHalf = 32768.0;  // OctoMap's tree_max_val
+    static constexpr double kHalf = kKeyCenter;  // OctoMap's tree_max_val
     double factor_;
 };
 
@@ -95,7 +96,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
                        size_t threads, InsertCounts &counts) {
     const KeyMapper mapper(tree.octomap_tree());
     const octomap::point3d origin = to_float(settings.sensor_pose.translation);
-    octomap::OcTreeKey origin_key;
+    octomap::OcTreeKey origin_key(0, 0, 0);
     const bool origin_inside = mapper.key(origin, origin_key);
     if (settings.raycast && !origin_inside) throw_invalid("sensor_pose.position lies outside the map cube");
 
@@ -106,6 +107,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
     });
     FrameRays rays = std::move(parts[0].rays);
     rays.origin = origin;
+    rays.origin_key = origin_key;
     if (settings.raycast) {
         const uint32_t k[3] = {origin_key[0], origin_key[1], origin_key[2]};
         rays.box.grow(k);

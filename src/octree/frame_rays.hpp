@@ -16,6 +16,7 @@ namespace octoprox {
 
 struct FrameRays {
     octomap::point3d origin;
+    octomap::OcTreeKey origin_key;  // meaningful in ray-cast mode (the origin lies in the map)
     // Every ray's end and its key (in no particular order), and the keys
     // of the ends that are occupied cells (rays cut at max_range have none).
     std::vector<octomap::point3d> ends;

@@ -38,7 +38,7 @@ struct RayWorker {
 class RayCast {
 public:
     RayCast(const BoundedOcTree &tree, const FrameRays &rays, const KeyBox &box)
-        : rays_(rays), box_(box), walker_(tree, rays.origin) {}
+        : rays_(rays), box_(box), walker_(tree, rays.origin, rays.origin_key) {}
 
     void run(RayWorker &worker) {
         worker.marks.reset(box_);
@@ -59,6 +59,7 @@ private:
 };
 
 void mark_endpoints(const FrameRays &rays, FrameMarks &marks) {
+    marks.add_endpoint_marks();
     for (const octomap::OcTreeKey &key : rays.hit_keys) {
         const uint32_t k[3] = {key[0], key[1], key[2]};
         marks.mark_endpoint(marks.bit_of(k));
@@ -92,15 +93,14 @@ FrameCells keyset_cells(const BoundedOcTree &tree, const FrameRays &rays, bool r
     for (const octomap::OcTreeKey &key : occupied_cells)
         cells.push_back(morton_encode(key[0], key[1], key[2]) | FrameCells::kHitBit);
     for (const octomap::OcTreeKey &key : free_cells) cells.push_back(morton_encode(key[0], key[1], key[2]));
-    FrameMarks none;
-    none.reset(KeyBox());
-    return collect_cells(none, std::move(cells));
+    return sorted_cells(std::move(cells));
 }
 
 FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint32_t max_threads) {
-    if (rays.box.padded(kBoxPadding).volume() > FrameMarks::kMaxCells) return keyset_cells(tree, rays, true);
+    const KeyBox box = rays.box.padded(kBoxPadding);
+    if (box.volume() > FrameMarks::kMaxCells) return keyset_cells(tree, rays, true);
     std::vector<RayWorker> workers(task_count(max_threads, (rays.ends.size() + kRaysPerChunk - 1) / kRaysPerChunk));
-    RayCast cast(tree, rays, rays.box.padded(kBoxPadding));
+    RayCast cast(tree, rays, box);
     run_tasks(workers.size(), [&](size_t i) { cast.run(workers[i]); });
     FrameMarks &marks = workers[0].marks;
     for (size_t i = 1; i < workers.size(); ++i) marks.merge_crossed(workers[i].marks);

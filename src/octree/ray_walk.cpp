@@ -72,14 +72,9 @@ private:
 
 }  // namespace
 
-octomap::OcTreeKey key_of(const BoundedOcTree &tree, const octomap::point3d &point) {
-    octomap::OcTreeKey key;
-    tree.coordToKeyChecked(point, key);
-    return key;
-}
-
-RayWalker::RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin)
-    : tree_(tree), origin_(origin), origin_key_(key_of(tree, origin)) {}
+RayWalker::RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin,
+                     const octomap::OcTreeKey &origin_key)
+    : tree_(tree), origin_(origin), origin_key_(origin_key) {}
 
 // Two rays at a time, each lane refilled as soon as its ray is done.  The
 // lanes are spelled out, and the face pair never leaves this function, so

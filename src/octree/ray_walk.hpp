@@ -18,8 +18,8 @@ class BoundedOcTree;
 
 class RayWalker {
 public:
-    // The origin must lie inside the map.
-    RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin);
+    // The origin must lie inside the map; origin_key is its key.
+    RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin, const octomap::OcTreeKey &origin_key);
 
     // Marks as crossed, for rays [begin, end) of `ends`, the cells from the
     // origin's cell up to, not including, the end's cell (`end_keys` the
@@ -34,8 +34,5 @@ private:
     octomap::point3d origin_;
     octomap::OcTreeKey origin_key_;
 };
-
-// The key of a point inside the map, as OctoMap computes it.
-octomap::OcTreeKey key_of(const BoundedOcTree &tree, const octomap::point3d &point);
 
 }  // namespace octoprox
