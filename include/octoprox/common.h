@@ -29,6 +29,8 @@
 #define OPX_VERSION_MAJOR 0
 #define OPX_VERSION_MINOR 1
 #define OPX_VERSION_PATCH 0
+/* The SONAME names the ABI: liboctoprox.so.0.MINOR while MAJOR is 0 (a
+ * minor release may change the ABI), liboctoprox.so.MAJOR from 1.0 on. */
 /* One number that grows with every release: major*10000 + minor*100 + patch. */
 #define OPX_VERSION_NUMBER \
     (OPX_VERSION_MAJOR * 10000 + OPX_VERSION_MINOR * 100 + OPX_VERSION_PATCH)

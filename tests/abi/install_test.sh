@@ -27,6 +27,15 @@ ls "$prefix/$libdir"/liboctoprox.so* >/dev/null || fail "no liboctoprox.so in $p
 [[ -f $prefix/$libdir/pkgconfig/octoprox.pc ]] || fail "no octoprox.pc in $prefix/$libdir/pkgconfig"
 [[ -f $prefix/$libdir/cmake/octoprox/octoproxConfig.cmake ]] || fail "no octoproxConfig.cmake"
 
+step "the SONAME is liboctoprox.so.0.MINOR on 0.x, liboctoprox.so.MAJOR from 1.0 on"
+version_part() { sed -nE "s/^#define OPX_VERSION_$1 ([0-9]+).*/\1/p" "$source_dir/include/octoprox/common.h"; }
+major=$(version_part MAJOR) minor=$(version_part MINOR)
+if [[ $major == 0 ]]; then soname=liboctoprox.so.0.$minor; else soname=liboctoprox.so.$major; fi
+actual=$(readelf -d "$prefix/$libdir/liboctoprox.so" | sed -nE 's/.*\(SONAME\).*\[(.*)\]/\1/p')
+[[ $actual == "$soname" ]] || fail "the SONAME is '$actual', not $soname"
+[[ -e $prefix/$libdir/$soname ]] || fail "no $soname in $prefix/$libdir"
+echo "SONAME $actual"
+
 # Run a program against the installed library only; check it used it.
 run_installed() {
     local program=$1
