@@ -5,7 +5,8 @@ The library is looked up, in order:
   1. $OPX_LIBRARY: the path of liboctoprox.so (nothing else is tried when
      it is set, so a wrong path is an error, not a silent fallback);
   2. next to this package (a wheel or a copy can ship the library inside);
-  3. the system's library path (an installed liboctoprox.so.MAJOR).
+  3. the system's library path (an installed liboctoprox.so.0.MINOR on 0.x,
+     liboctoprox.so.MAJOR from 1.0 on: the library's SONAME).
 """
 import ctypes
 import ctypes.util
@@ -20,8 +21,10 @@ from ._errors import error_for
 HEADER_VERSION = (0, 1, 0)
 
 _ENV = "OPX_LIBRARY"
-_NAMES = ("liboctoprox.so", f"liboctoprox.so.{HEADER_VERSION[0]}", "liboctoprox.dylib",
-          "octoprox.dll")
+# The SONAME names the ABI: MAJOR.MINOR while MAJOR is 0, MAJOR from 1.0 on.
+_SONAME = ("liboctoprox.so.%d.%d" % HEADER_VERSION[:2] if HEADER_VERSION[0] == 0
+           else "liboctoprox.so.%d" % HEADER_VERSION[0])
+_NAMES = ("liboctoprox.so", _SONAME, "liboctoprox.dylib", "octoprox.dll")
 
 
 def _load():
@@ -145,13 +148,22 @@ def _declare(library):
             function.errcheck = _raise_on_error
 
 
+def _compatible(major, minor):
+    """A library of version major.minor serves these bindings: the same
+    major and a minor at least as new, but on 0.x (where a minor may change
+    the ABI, as the SONAME says) the same minor."""
+    if major != HEADER_VERSION[0]:
+        return False
+    return minor == HEADER_VERSION[1] if major == 0 else minor >= HEADER_VERSION[1]
+
+
 def _check_version(library):
     number = library.opx_version_number()
-    major, minor = number // 10000, number // 100 % 100
-    if major != HEADER_VERSION[0] or minor < HEADER_VERSION[1]:
-        raise ImportError("octoprox: the library is version %s, these bindings need %d.%d "
-                          "or a later minor" % (library.opx_version().decode(),
-                                                *HEADER_VERSION[:2]))
+    if not _compatible(number // 10000, number // 100 % 100):
+        wanted = "%d.%d" % HEADER_VERSION[:2]
+        wanted += "" if HEADER_VERSION[0] == 0 else " or a later minor"
+        raise ImportError("octoprox: the library is version %s, these bindings need %s"
+                          % (library.opx_version().decode(), wanted))
 
 
 lib = _load()

@@ -82,6 +82,22 @@ class Versions(unittest.TestCase):
         self.assertEqual(octoprox.version_number(), major * 10000 + minor * 100 + patch)
         self.assertEqual(octoprox.status_name(-6), "OPX_ERROR_IO")
 
+    def test_a_library_is_compatible_within_its_soname(self):
+        major, minor, _ = octoprox.HEADER_VERSION
+        self.assertTrue(_library._compatible(major, minor))
+        self.assertFalse(_library._compatible(major + 1, minor))
+        # 0.x: a later minor is another ABI; from 1.0 on it only adds.
+        self.assertEqual(_library._compatible(major, minor + 1), major != 0)
+
+    def test_the_soname_file_is_beside_the_library(self):
+        path = os.environ.get("OPX_LIBRARY")
+        if not path:
+            self.skipTest("OPX_LIBRARY is not set")
+        major, minor, _ = octoprox.HEADER_VERSION
+        expected = "liboctoprox.so.%d" % major + (".%d" % minor if major == 0 else "")
+        self.assertEqual(_library._SONAME, expected)
+        self.assertTrue(os.path.exists(os.path.join(os.path.dirname(path), expected)), expected)
+
 
 class Loader(unittest.TestCase):
     def test_a_wrong_opx_library_is_an_import_error(self):

@@ -90,12 +90,13 @@ pub fn version_number() -> u32 {
 }
 
 /// Checks that the linked library is compatible with the headers these
-/// bindings were generated from: same major version, minor at least as
-/// new.  Every constructor calls it.
+/// bindings were generated from: same major version and a minor at least
+/// as new, but on 0.x (where a minor may change the ABI, as the SONAME
+/// `liboctoprox.so.0.MINOR` says) the same minor.  Every constructor calls
+/// it.
 pub fn check_version() -> Result<()> {
     let number = version_number() as i32;
-    let (major, minor) = (number / 10000, number / 100 % 100);
-    if major == sys::OPX_VERSION_MAJOR && minor >= sys::OPX_VERSION_MINOR {
+    if compatible(number / 10000, number / 100 % 100) {
         return Ok(());
     }
     Err(Error::new(
@@ -107,4 +108,29 @@ pub fn check_version() -> Result<()> {
             sys::OPX_VERSION_MINOR
         ),
     ))
+}
+
+/// Whether a library of version `major.minor` serves these bindings.
+fn compatible(major: i32, minor: i32) -> bool {
+    if major != sys::OPX_VERSION_MAJOR {
+        false
+    } else if major == 0 {
+        minor == sys::OPX_VERSION_MINOR
+    } else {
+        minor >= sys::OPX_VERSION_MINOR
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{compatible, sys};
+
+    #[test]
+    fn a_library_is_compatible_within_its_soname() {
+        let (major, minor) = (sys::OPX_VERSION_MAJOR, sys::OPX_VERSION_MINOR);
+        assert!(compatible(major, minor));
+        assert!(!compatible(major + 1, minor));
+        // 0.x: a later minor is another ABI; from 1.0 on it only adds.
+        assert_eq!(compatible(major, minor + 1), major != 0);
+    }
 }
