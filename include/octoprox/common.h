@@ -19,6 +19,10 @@
  *  - The library never keeps a caller's pointer after a call returns.
  *  - Functions taking a `const` handle may run concurrently on the same
  *    object; the others need exclusive access to it.
+ *  - Names: opx_<object>_<verb>.  An accessor that reads a value out of an
+ *    object is opx_<object>_get_<thing> (opx_linkset_get_link_count,
+ *    opx_octree_get_stats, opx_query_get_contact), its setter
+ *    opx_<object>_set_<thing>, a lookup by name opx_<object>_find_<thing>.
  */
 #ifndef OCTOPROX_COMMON_H
 #define OCTOPROX_COMMON_H

@@ -80,12 +80,12 @@ OPX_API opx_status opx_linkset_add_link(opx_linkset *links, const char *name,
 OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link,
                                          const opx_shape *shape, uint32_t *out_shape);
 
-OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count);
-OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link,
-                                           uint32_t *out_count);
+OPX_API opx_status opx_linkset_get_link_count(const opx_linkset *links, uint32_t *out_count);
+OPX_API opx_status opx_linkset_get_shape_count(const opx_linkset *links, uint32_t link,
+                                               uint32_t *out_count);
 /* The link's name; valid until the link set changes or is destroyed. */
-OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link,
-                                         const char **out_name);
+OPX_API opx_status opx_linkset_get_link_name(const opx_linkset *links, uint32_t link,
+                                             const char **out_name);
 /*
  * Shape `shape` of link `link` as it was added (shape frame at out->pose in
  * the link frame; a box's full sizes, a cylinder's full length).  For
@@ -118,6 +118,19 @@ OPX_API opx_status opx_linkset_set_poses(opx_linkset *links, const opx_pose *pos
                                          size_t count, size_t stride);
 OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
                                         opx_pose *out_pose);
+
+/*
+ * Aliases kept for compatibility: each behaves exactly as the function
+ * named in its comment (its errors name the alias).  Use those names.
+ */
+/* Alias of opx_linkset_get_link_count. */
+OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count);
+/* Alias of opx_linkset_get_shape_count. */
+OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link,
+                                           uint32_t *out_count);
+/* Alias of opx_linkset_get_link_name. */
+OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link,
+                                         const char **out_name);
 
 #ifdef __cplusplus
 }

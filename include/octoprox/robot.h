@@ -69,7 +69,7 @@ typedef struct opx_urdf_options {
      * (opx_linkset_load_urdf_file) or the current directory (_string). */
     const char *base_dir;
     /* Optional SRDF file: its <disable_collisions link1 link2> pairs are
-     * read (and only those), see opx_linkset_disabled_pair.  NULL: none. */
+     * read (and only those), see opx_linkset_get_disabled_pair.  NULL: none. */
     const char *srdf_path;
 } opx_urdf_options;
 
@@ -128,12 +128,12 @@ typedef struct opx_joint_info {
 OPX_API opx_status opx_joint_info_init(opx_joint_info *info, size_t size);
 
 /* Number of joints (0 for a set not made from URDF). */
-OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count);
+OPX_API opx_status opx_linkset_get_joint_count(const opx_linkset *links, uint32_t *out_count);
 /* The joint named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
 OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *name,
                                           uint32_t *out_joint);
-OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint,
-                                          opx_joint_info *out);
+OPX_API opx_status opx_linkset_get_joint_info(const opx_linkset *links, uint32_t joint,
+                                              opx_joint_info *out);
 
 /*
  * FK: sets every joint position and then every link pose in the map frame
@@ -164,7 +164,23 @@ OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, dou
 
 /* SRDF <disable_collisions> pairs (for reporting; the library does no
  * self-collision checks): count, and the two link indices of pair i. */
+OPX_API opx_status opx_linkset_get_disabled_pair_count(const opx_linkset *links,
+                                                       uint32_t *out_count);
+OPX_API opx_status opx_linkset_get_disabled_pair(const opx_linkset *links, uint32_t pair,
+                                                 uint32_t *out_link1, uint32_t *out_link2);
+
+/*
+ * Aliases kept for compatibility: each behaves exactly as the function
+ * named in its comment (its errors name the alias).  Use those names.
+ */
+/* Alias of opx_linkset_get_joint_count. */
+OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count);
+/* Alias of opx_linkset_get_joint_info. */
+OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint,
+                                          opx_joint_info *out);
+/* Alias of opx_linkset_get_disabled_pair_count. */
 OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *links, uint32_t *out_count);
+/* Alias of opx_linkset_get_disabled_pair. */
 OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *links, uint32_t pair,
                                              uint32_t *out_link1, uint32_t *out_link2);
 

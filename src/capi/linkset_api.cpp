@@ -131,6 +131,35 @@ opx_shape shape_to_abi(const ShapeDef &def) {
     return out;
 }
 
+// The accessors, shared by their opx_linkset_get_* names and the aliases
+// (each error names the function the caller called).
+opx_status link_count(const char *function, const opx_linkset *links, uint32_t *out_count) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->links.link_count());
+        return OPX_OK;
+    });
+}
+
+opx_status shape_count(const char *function, const opx_linkset *links, uint32_t link, uint32_t *out_count) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->links.link(require_link(links, link)).shapes.size());
+        return OPX_OK;
+    });
+}
+
+opx_status link_name(const char *function, const opx_linkset *links, uint32_t link, const char **out_name) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_name, "out_name");
+        *out_name = links->links.link(require_link(links, link)).name.c_str();
+        return OPX_OK;
+    });
+}
+
 }  // namespace
 
 extern "C" {
@@ -181,31 +210,16 @@ OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link, cons
     });
 }
 
-OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        *out_count = static_cast<uint32_t>(links->links.link_count());
-        return OPX_OK;
-    });
+OPX_API opx_status opx_linkset_get_link_count(const opx_linkset *links, uint32_t *out_count) {
+    return link_count(__func__, links, out_count);
 }
 
-OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link, uint32_t *out_count) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        *out_count = static_cast<uint32_t>(links->links.link(require_link(links, link)).shapes.size());
-        return OPX_OK;
-    });
+OPX_API opx_status opx_linkset_get_shape_count(const opx_linkset *links, uint32_t link, uint32_t *out_count) {
+    return shape_count(__func__, links, link, out_count);
 }
 
-OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link, const char **out_name) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_name, "out_name");
-        *out_name = links->links.link(require_link(links, link)).name.c_str();
-        return OPX_OK;
-    });
+OPX_API opx_status opx_linkset_get_link_name(const opx_linkset *links, uint32_t link, const char **out_name) {
+    return link_name(__func__, links, link, out_name);
 }
 
 OPX_API opx_status opx_linkset_find_link(const opx_linkset *links, const char *name, uint32_t *out_link) {
@@ -296,6 +310,19 @@ OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link
         write_versioned(out_shape, shape_to_abi(*shapes[shape]), "out_shape");
         return OPX_OK;
     });
+}
+
+// Aliases of the opx_linkset_get_* accessors, kept for compatibility.
+OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count) {
+    return link_count(__func__, links, out_count);
+}
+
+OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link, uint32_t *out_count) {
+    return shape_count(__func__, links, link, out_count);
+}
+
+OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link, const char **out_name) {
+    return link_name(__func__, links, link, out_name);
 }
 
 }  // extern "C"

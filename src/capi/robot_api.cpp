@@ -91,6 +91,49 @@ opx_joint_info joint_info(const Joint &joint) {
     return info;
 }
 
+// The accessors, shared by their opx_linkset_get_* names and the aliases
+// (each error names the function the caller called).
+opx_status joint_count(const char *function, const opx_linkset *links, uint32_t *out_count) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->robot.joints.joint_count());
+        return OPX_OK;
+    });
+}
+
+opx_status read_joint_info(const char *function, const opx_linkset *links, uint32_t joint, opx_joint_info *out) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out, "out");
+        write_versioned(out, joint_info(links->robot.joints.joint(require_joint(links, joint))), "out");
+        return OPX_OK;
+    });
+}
+
+opx_status disabled_pair_count(const char *function, const opx_linkset *links, uint32_t *out_count) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(links->robot.disabled_pairs.size());
+        return OPX_OK;
+    });
+}
+
+opx_status disabled_pair(const char *function, const opx_linkset *links, uint32_t pair, uint32_t *out_link1,
+                         uint32_t *out_link2) {
+    return guard(function, [&] {
+        require_pointer(links, "links");
+        require_pointer(out_link1, "out_link1");
+        require_pointer(out_link2, "out_link2");
+        const auto &pairs = links->robot.disabled_pairs;
+        if (pair >= pairs.size())
+            throw_invalid(format("pair %u does not exist (the set has %zu disabled pairs)", pair, pairs.size()));
+        *out_link1 = pairs[pair][0], *out_link2 = pairs[pair][1];
+        return OPX_OK;
+    });
+}
+
 }  // namespace
 
 extern "C" {
@@ -127,13 +170,8 @@ OPX_API opx_status opx_linkset_load_urdf_string(const char *xml, const opx_urdf_
     });
 }
 
-OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        *out_count = static_cast<uint32_t>(links->robot.joints.joint_count());
-        return OPX_OK;
-    });
+OPX_API opx_status opx_linkset_get_joint_count(const opx_linkset *links, uint32_t *out_count) {
+    return joint_count(__func__, links, out_count);
 }
 
 OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *name, uint32_t *out_joint) {
@@ -148,13 +186,8 @@ OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *
     });
 }
 
-OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint, opx_joint_info *out) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out, "out");
-        write_versioned(out, joint_info(links->robot.joints.joint(require_joint(links, joint))), "out");
-        return OPX_OK;
-    });
+OPX_API opx_status opx_linkset_get_joint_info(const opx_linkset *links, uint32_t joint, opx_joint_info *out) {
+    return read_joint_info(__func__, links, joint, out);
 }
 
 OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const double *positions, size_t count,
@@ -212,27 +245,31 @@ OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, dou
     });
 }
 
+OPX_API opx_status opx_linkset_get_disabled_pair_count(const opx_linkset *links, uint32_t *out_count) {
+    return disabled_pair_count(__func__, links, out_count);
+}
+
+OPX_API opx_status opx_linkset_get_disabled_pair(const opx_linkset *links, uint32_t pair, uint32_t *out_link1,
+                                                 uint32_t *out_link2) {
+    return disabled_pair(__func__, links, pair, out_link1, out_link2);
+}
+
+// Aliases of the opx_linkset_get_* accessors, kept for compatibility.
+OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count) {
+    return joint_count(__func__, links, out_count);
+}
+
+OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint, opx_joint_info *out) {
+    return read_joint_info(__func__, links, joint, out);
+}
+
 OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *links, uint32_t *out_count) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        *out_count = static_cast<uint32_t>(links->robot.disabled_pairs.size());
-        return OPX_OK;
-    });
+    return disabled_pair_count(__func__, links, out_count);
 }
 
 OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *links, uint32_t pair, uint32_t *out_link1,
                                              uint32_t *out_link2) {
-    return guard(__func__, [&] {
-        require_pointer(links, "links");
-        require_pointer(out_link1, "out_link1");
-        require_pointer(out_link2, "out_link2");
-        const auto &pairs = links->robot.disabled_pairs;
-        if (pair >= pairs.size())
-            throw_invalid(format("pair %u does not exist (the set has %zu disabled pairs)", pair, pairs.size()));
-        *out_link1 = pairs[pair][0], *out_link2 = pairs[pair][1];
-        return OPX_OK;
-    });
+    return disabled_pair(__func__, links, pair, out_link1, out_link2);
 }
 
 }  // extern "C"

@@ -87,10 +87,10 @@ SIGNATURES = {
     "opx_linkset_clone": (status, [handle, P(handle)]),
     "opx_linkset_add_link": (status, [handle, c_char_p, P(c_uint32)]),
     "opx_linkset_add_shape": (status, [handle, c_uint32, P(s.Shape), P(c_uint32)]),
-    "opx_linkset_link_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_get_link_count": (status, [handle, P(c_uint32)]),
     "opx_linkset_get_shape": (status, [handle, c_uint32, c_uint32, P(s.Shape)]),
-    "opx_linkset_shape_count": (status, [handle, c_uint32, P(c_uint32)]),
-    "opx_linkset_link_name": (status, [handle, c_uint32, P(c_char_p)]),
+    "opx_linkset_get_shape_count": (status, [handle, c_uint32, P(c_uint32)]),
+    "opx_linkset_get_link_name": (status, [handle, c_uint32, P(c_char_p)]),
     "opx_linkset_find_link": (status, [handle, c_char_p, P(c_uint32)]),
     "opx_linkset_set_padding": (status, [handle, c_double]),
     "opx_linkset_set_link_padding": (status, [handle, c_uint32, c_double]),
@@ -100,15 +100,15 @@ SIGNATURES = {
     # robot.h
     "opx_linkset_load_urdf_file": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
     "opx_linkset_load_urdf_string": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
-    "opx_linkset_joint_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_get_joint_count": (status, [handle, P(c_uint32)]),
     "opx_linkset_find_joint": (status, [handle, c_char_p, P(c_uint32)]),
-    "opx_linkset_joint_info": (status, [handle, c_uint32, P(s.JointInfo)]),
+    "opx_linkset_get_joint_info": (status, [handle, c_uint32, P(s.JointInfo)]),
     "opx_linkset_set_joint_positions": (status, [handle, c_void_p, c_size_t, P(s.Pose)]),
     "opx_linkset_set_named_joint_positions": (status, [handle, P(c_char_p), c_void_p, c_size_t,
                                                        P(s.Pose)]),
     "opx_linkset_get_joint_positions": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
-    "opx_linkset_disabled_pair_count": (status, [handle, P(c_uint32)]),
-    "opx_linkset_disabled_pair": (status, [handle, c_uint32, P(c_uint32), P(c_uint32)]),
+    "opx_linkset_get_disabled_pair_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_get_disabled_pair": (status, [handle, c_uint32, P(c_uint32), P(c_uint32)]),
     # query.h
     "opx_query_create": (status, [P(s.QueryOptions), P(handle)]),
     "opx_query_destroy": (None, [handle]),
@@ -129,6 +129,18 @@ SIGNATURES = {
                                           P(s.DistanceResult)]),
 }
 SIGNATURES.update({init: _versioned_init(struct) for struct, init in s.VERSIONED.items()})
+# Aliases the library keeps for compatibility (the package calls the names
+# they stand for): alias -> name.
+ALIASES = {
+    "opx_linkset_link_count": "opx_linkset_get_link_count",
+    "opx_linkset_shape_count": "opx_linkset_get_shape_count",
+    "opx_linkset_link_name": "opx_linkset_get_link_name",
+    "opx_linkset_joint_count": "opx_linkset_get_joint_count",
+    "opx_linkset_joint_info": "opx_linkset_get_joint_info",
+    "opx_linkset_disabled_pair_count": "opx_linkset_get_disabled_pair_count",
+    "opx_linkset_disabled_pair": "opx_linkset_get_disabled_pair",
+}
+SIGNATURES.update({alias: SIGNATURES[name] for alias, name in ALIASES.items()})
 
 
 def _raise_on_error(result, function, arguments):

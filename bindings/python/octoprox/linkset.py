@@ -88,12 +88,12 @@ class LinkSet(Handle, RobotModel):
     @property
     def link_count(self):
         count = ctypes.c_uint32()
-        lib.opx_linkset_link_count(self, ctypes.byref(count))
+        lib.opx_linkset_get_link_count(self, ctypes.byref(count))
         return count.value
 
     def shape_count(self, link):
         count = ctypes.c_uint32()
-        lib.opx_linkset_shape_count(self, link, ctypes.byref(count))
+        lib.opx_linkset_get_shape_count(self, link, ctypes.byref(count))
         return count.value
 
     def shape(self, link, shape):
@@ -116,7 +116,7 @@ class LinkSet(Handle, RobotModel):
 
     def link_name(self, link):
         name = ctypes.c_char_p()
-        lib.opx_linkset_link_name(self, link, ctypes.byref(name))
+        lib.opx_linkset_get_link_name(self, link, ctypes.byref(name))
         return name.value.decode("utf-8", "replace")
 
     @property

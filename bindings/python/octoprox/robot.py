@@ -52,7 +52,7 @@ class RobotModel:
     @property
     def joint_count(self):
         count = ctypes.c_uint32()
-        lib.opx_linkset_joint_count(self, ctypes.byref(count))
+        lib.opx_linkset_get_joint_count(self, ctypes.byref(count))
         return count.value
 
     def find_joint(self, name):
@@ -63,7 +63,7 @@ class RobotModel:
     def joint_info(self, joint):
         """The JointInfo of a joint: type, name, links, axis, origin, limits."""
         out = init_struct(s.JointInfo)
-        lib.opx_linkset_joint_info(self, joint, out)
+        lib.opx_linkset_get_joint_info(self, joint, out)
         return out
 
     @property
@@ -94,9 +94,9 @@ class RobotModel:
     def disabled_pairs(self):
         """The SRDF <disable_collisions> pairs as (link, link) indices."""
         count, a, b = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_uint32()
-        lib.opx_linkset_disabled_pair_count(self, ctypes.byref(count))
+        lib.opx_linkset_get_disabled_pair_count(self, ctypes.byref(count))
         pairs = []
         for i in range(count.value):
-            lib.opx_linkset_disabled_pair(self, i, ctypes.byref(a), ctypes.byref(b))
+            lib.opx_linkset_get_disabled_pair(self, i, ctypes.byref(a), ctypes.byref(b))
             pairs.append((a.value, b.value))
         return pairs

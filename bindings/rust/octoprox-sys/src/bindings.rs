@@ -178,9 +178,9 @@ extern "C" { pub fn opx_linkset_destroy (links : * mut opx_linkset) ; }
 extern "C" { pub fn opx_linkset_clone (links : * const opx_linkset , out : * mut * mut opx_linkset) -> opx_status ; }
 extern "C" { pub fn opx_linkset_add_link (links : * mut opx_linkset , name : * const :: std :: os :: raw :: c_char , out_link : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_add_shape (links : * mut opx_linkset , link : u32 , shape : * const opx_shape , out_shape : * mut u32) -> opx_status ; }
-extern "C" { pub fn opx_linkset_link_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
-extern "C" { pub fn opx_linkset_shape_count (links : * const opx_linkset , link : u32 , out_count : * mut u32) -> opx_status ; }
-extern "C" { pub fn opx_linkset_link_name (links : * const opx_linkset , link : u32 , out_name : * mut * const :: std :: os :: raw :: c_char) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_link_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_shape_count (links : * const opx_linkset , link : u32 , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_link_name (links : * const opx_linkset , link : u32 , out_name : * mut * const :: std :: os :: raw :: c_char) -> opx_status ; }
 extern "C" { pub fn opx_linkset_get_shape (links : * const opx_linkset , link : u32 , shape : u32 , out_shape : * mut opx_shape) -> opx_status ; }
 extern "C" { pub fn opx_linkset_find_link (links : * const opx_linkset , name : * const :: std :: os :: raw :: c_char , out_link : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_padding (links : * mut opx_linkset , padding : f64) -> opx_status ; }
@@ -188,6 +188,9 @@ extern "C" { pub fn opx_linkset_set_link_padding (links : * mut opx_linkset , li
 extern "C" { pub fn opx_linkset_set_link_enabled (links : * mut opx_linkset , link : u32 , enabled : i32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_poses (links : * mut opx_linkset , poses : * const opx_pose , count : usize , stride : usize) -> opx_status ; }
 extern "C" { pub fn opx_linkset_get_pose (links : * const opx_linkset , link : u32 , out_pose : * mut opx_pose) -> opx_status ; }
+extern "C" { pub fn opx_linkset_link_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_shape_count (links : * const opx_linkset , link : u32 , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_link_name (links : * const opx_linkset , link : u32 , out_name : * mut * const :: std :: os :: raw :: c_char) -> opx_status ; }
 # [repr (C)] # [derive (Debug , Copy , Clone , PartialEq)] pub struct opx_urdf_options { pub struct_size : u32 , pub reserved0 : u32 , pub package_dirs : * const * const :: std :: os :: raw :: c_char , pub package_dir_count : usize , pub base_dir : * const :: std :: os :: raw :: c_char , pub srdf_path : * const :: std :: os :: raw :: c_char , }
 # [test] fn bindgen_test_layout_opx_urdf_options () { assert_eq ! (:: std :: mem :: size_of :: < opx_urdf_options > () , 40usize , concat ! ("Size of: " , stringify ! (opx_urdf_options))) ; assert_eq ! (:: std :: mem :: align_of :: < opx_urdf_options > () , 8usize , concat ! ("Alignment of " , stringify ! (opx_urdf_options))) ;
 fn test_field_struct_size () { assert_eq ! (unsafe { let uninit = :: std :: mem :: MaybeUninit :: < opx_urdf_options > :: uninit () ; let ptr = uninit . as_ptr () ; :: std :: ptr :: addr_of ! ((* ptr) . struct_size) as usize - ptr as usize } , 0usize , concat ! ("Offset of field: " , stringify ! (opx_urdf_options) , "::" , stringify ! (struct_size))) ; } test_field_struct_size () ;
@@ -217,12 +220,16 @@ fn test_field_effort () { assert_eq ! (unsafe { let uninit = :: std :: mem :: Ma
 fn test_field_mimic_multiplier () { assert_eq ! (unsafe { let uninit = :: std :: mem :: MaybeUninit :: < opx_joint_info > :: uninit () ; let ptr = uninit . as_ptr () ; :: std :: ptr :: addr_of ! ((* ptr) . mimic_multiplier) as usize - ptr as usize } , 144usize , concat ! ("Offset of field: " , stringify ! (opx_joint_info) , "::" , stringify ! (mimic_multiplier))) ; } test_field_mimic_multiplier () ;
 fn test_field_mimic_offset () { assert_eq ! (unsafe { let uninit = :: std :: mem :: MaybeUninit :: < opx_joint_info > :: uninit () ; let ptr = uninit . as_ptr () ; :: std :: ptr :: addr_of ! ((* ptr) . mimic_offset) as usize - ptr as usize } , 152usize , concat ! ("Offset of field: " , stringify ! (opx_joint_info) , "::" , stringify ! (mimic_offset))) ; } test_field_mimic_offset () ; }
 extern "C" { pub fn opx_joint_info_init (info : * mut opx_joint_info , size : usize) -> opx_status ; }
-extern "C" { pub fn opx_linkset_joint_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_joint_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_find_joint (links : * const opx_linkset , name : * const :: std :: os :: raw :: c_char , out_joint : * mut u32) -> opx_status ; }
-extern "C" { pub fn opx_linkset_joint_info (links : * const opx_linkset , joint : u32 , out : * mut opx_joint_info) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_joint_info (links : * const opx_linkset , joint : u32 , out : * mut opx_joint_info) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_joint_positions (links : * mut opx_linkset , positions : * const f64 , count : usize , base_pose : * const opx_pose) -> opx_status ; }
 extern "C" { pub fn opx_linkset_set_named_joint_positions (links : * mut opx_linkset , names : * const * const :: std :: os :: raw :: c_char , positions : * const f64 , count : usize , base_pose : * const opx_pose) -> opx_status ; }
 extern "C" { pub fn opx_linkset_get_joint_positions (links : * const opx_linkset , out : * mut f64 , capacity : usize , out_count : * mut usize) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_disabled_pair_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_get_disabled_pair (links : * const opx_linkset , pair : u32 , out_link1 : * mut u32 , out_link2 : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_joint_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
+extern "C" { pub fn opx_linkset_joint_info (links : * const opx_linkset , joint : u32 , out : * mut opx_joint_info) -> opx_status ; }
 extern "C" { pub fn opx_linkset_disabled_pair_count (links : * const opx_linkset , out_count : * mut u32) -> opx_status ; }
 extern "C" { pub fn opx_linkset_disabled_pair (links : * const opx_linkset , pair : u32 , out_link1 : * mut u32 , out_link2 : * mut u32) -> opx_status ; }
 # [repr (C)] # [derive (Debug , Copy , Clone)] pub struct opx_query { _unused : [u8 ; 0] , }

@@ -169,14 +169,14 @@ impl LinkSet {
     pub fn link_count(&self) -> Result<u32> {
         let mut count = 0;
         // SAFETY: const call.
-        check(unsafe { sys::opx_linkset_link_count(self.raw, &mut count) })?;
+        check(unsafe { sys::opx_linkset_get_link_count(self.raw, &mut count) })?;
         Ok(count)
     }
 
     pub fn shape_count(&self, link: u32) -> Result<u32> {
         let mut count = 0;
         // SAFETY: const call.
-        check(unsafe { sys::opx_linkset_shape_count(self.raw, link, &mut count) })?;
+        check(unsafe { sys::opx_linkset_get_shape_count(self.raw, link, &mut count) })?;
         Ok(count)
     }
 
@@ -198,7 +198,7 @@ impl LinkSet {
         let mut name = ptr::null();
         // SAFETY: const call; the name stays valid while we hold &self and
         // is copied at once.
-        check(unsafe { sys::opx_linkset_link_name(self.raw, link, &mut name) })?;
+        check(unsafe { sys::opx_linkset_get_link_name(self.raw, link, &mut name) })?;
         Ok(unsafe { c_string(name) })
     }
 

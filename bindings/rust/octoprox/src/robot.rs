@@ -119,7 +119,7 @@ impl LinkSet {
     pub fn joint_count(&self) -> Result<u32> {
         let mut count = 0;
         // SAFETY: const call.
-        check(unsafe { sys::opx_linkset_joint_count(self.as_raw(), &mut count) })?;
+        check(unsafe { sys::opx_linkset_get_joint_count(self.as_raw(), &mut count) })?;
         Ok(count)
     }
 
@@ -136,7 +136,7 @@ impl LinkSet {
     pub fn joint_info(&self, joint: u32) -> Result<JointInfo> {
         let mut j = sys::opx_joint_info::default();
         // SAFETY: const call; the name is copied while we hold &self.
-        check(unsafe { sys::opx_linkset_joint_info(self.as_raw(), joint, &mut j) })?;
+        check(unsafe { sys::opx_linkset_get_joint_info(self.as_raw(), joint, &mut j) })?;
         Ok(JointInfo {
             name: unsafe { c_string(j.name) },
             joint_type: j.type_,
@@ -203,11 +203,12 @@ impl LinkSet {
     pub fn disabled_pairs(&self) -> Result<Vec<(u32, u32)>> {
         let mut count = 0;
         // SAFETY: const calls.
-        check(unsafe { sys::opx_linkset_disabled_pair_count(self.as_raw(), &mut count) })?;
+        check(unsafe { sys::opx_linkset_get_disabled_pair_count(self.as_raw(), &mut count) })?;
         (0..count)
             .map(|pair| {
                 let (mut a, mut b) = (0, 0);
-                check(unsafe { sys::opx_linkset_disabled_pair(self.as_raw(), pair, &mut a, &mut b) })
+                let raw = self.as_raw();
+                check(unsafe { sys::opx_linkset_get_disabled_pair(raw, pair, &mut a, &mut b) })
                     .map(|_| (a, b))
             })
             .collect()
