@@ -1,6 +1,6 @@
 #include "base/file_bytes.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -16,7 +16,7 @@ struct FileCloser {
 };
 
 [[noreturn]] void throw_io(const char *what, const char *path, const char *reason) {
-    throw ApiError(OPX_ERROR_IO, capi::format("%s '%.300s' cannot be read: %s", what, path, reason));
+    throw ApiError(OPX_ERROR_IO, format("%s '%.300s' cannot be read: %s", what, path, reason));
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include "capi/error.hpp"
 
-#include <cstdarg>
 #include <cstdio>
 
 namespace octoprox::capi {
@@ -16,15 +15,6 @@ opx_status fail(opx_status status, const char *function, const char *message, co
     std::snprintf(last_error_message, kMessageCapacity, "%s: %s%s", function, message,
                   detail == nullptr ? "" : detail);
     return status;
-}
-
-std::string format(const char *fmt, ...) {
-    char buffer[512];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(buffer, sizeof buffer, fmt, args);
-    va_end(args);
-    return buffer;
 }
 
 }  // namespace octoprox::capi

@@ -22,12 +22,12 @@ MapFormat save_format(int32_t format, const char *path) {
     if (format == OPX_FORMAT_BT) return MapFormat::kBinary;
     if (format == OPX_FORMAT_OT) return MapFormat::kFull;
     if (format != OPX_FORMAT_AUTO)
-        throw_invalid(capi::format("format %d is not OPX_FORMAT_AUTO, _BT or _OT", format));
+        throw_invalid(octoprox::format("format %d is not OPX_FORMAT_AUTO, _BT or _OT", format));
     if (path == nullptr) return MapFormat::kBinary;
     const std::string name(path);
     if (ends_with(name, ".bt")) return MapFormat::kBinary;
     if (ends_with(name, ".ot")) return MapFormat::kFull;
-    throw_invalid(capi::format("path \"%s\" ends neither in .bt nor in .ot; give the format", path));
+    throw_invalid(octoprox::format("path \"%s\" ends neither in .bt nor in .ot; give the format", path));
 }
 
 // Writes bytes to path; false (with errno set) when any of it is not written.
@@ -127,7 +127,7 @@ OPX_API opx_status opx_octree_save_memory(const opx_octree *tree, int32_t format
         *out_size = bytes.size();
         if (bytes.size() > capacity)
             throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,
-                           capi::format("buffer holds %zu bytes, %zu are needed (see *out_size)", capacity,
+                           octoprox::format("buffer holds %zu bytes, %zu are needed (see *out_size)", capacity,
                                   bytes.size()));
         std::memcpy(buffer, bytes.data(), bytes.size());
         return OPX_OK;

@@ -2,7 +2,7 @@
 // cut ray's end use OctoMap's float arithmetic, unfused.
 #include "octree/frame_rays.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "base/parallel.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/octree_view.hpp"

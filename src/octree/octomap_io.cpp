@@ -1,6 +1,6 @@
 #include "octree/octomap_io.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "octree/octree_view.hpp"
 
 #include "octree/bounded_tree.hpp"
@@ -90,14 +90,14 @@ public:
         if (format_ == MapFormat::kBinary) binary_node(0);
         else full_node(0);
         if (pos_ != body_.size())
-            throw_corrupt(capi::format("%zu unexpected bytes after the tree data", body_.size() - pos_));
+            throw_corrupt(format("%zu unexpected bytes after the tree data", body_.size() - pos_));
         return count_;
     }
 
 private:
     const unsigned char *take(size_t n) {
         if (body_.size() - pos_ < n)
-            throw_corrupt(capi::format("truncated: tree data ends at byte %zu", body_.size()));
+            throw_corrupt(format("truncated: tree data ends at byte %zu", body_.size()));
         const auto *at = reinterpret_cast<const unsigned char *>(body_.data()) + pos_;
         pos_ += n;
         return at;
@@ -138,7 +138,7 @@ private:
 
 void check_resolution(double resolution) {
     if (!resolution_in_range(resolution))
-        throw_corrupt(capi::format("resolution %g is outside %g to %g metres", resolution, kMinResolution,
+        throw_corrupt(format("resolution %g is outside %g to %g metres", resolution, kMinResolution,
                                    kMaxResolution));
 }
 
@@ -171,7 +171,7 @@ std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, Octr
     const std::string body = bytes.substr(header.body_offset);
     const long long nodes = BodyValidator(body, header.format).validate();
     if (header.size >= 0 && header.size != nodes)
-        throw_corrupt(capi::format("header says %lld nodes, the data holds %lld", header.size, nodes));
+        throw_corrupt(format("header says %lld nodes, the data holds %lld", header.size, nodes));
     return read_map_body(body, header.format, header.resolution, params);
 }
 

@@ -1,6 +1,6 @@
 #include "octree/sensor_octree.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "octree/traverse.hpp"
 
 #include "octree/bounded_tree.hpp"
@@ -12,7 +12,6 @@
 namespace octoprox {
 
 void validate_params(const OctreeParams &p, const char *argument) {
-    using capi::format;
     auto check_probability = [&](double value, const char *field) {
         if (!(value > 0.0 && value < 1.0))
             throw_invalid(format("%s.%s is %g; a probability strictly between 0 and 1 is needed",

@@ -1,6 +1,6 @@
 #include "robot/joint_tree.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <cmath>
 

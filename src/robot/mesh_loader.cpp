@@ -1,6 +1,6 @@
 #include "robot/mesh_loader.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>

@@ -1,6 +1,6 @@
 #include "robot/resource_paths.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <sys/stat.h>
 

@@ -1,6 +1,6 @@
 #include "robot/urdf_elements.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "robot/urdf_values.hpp"
 #include "robot/xml_text.hpp"
 

@@ -1,6 +1,6 @@
 #include "robot/urdf_model.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "robot/mesh_loader.hpp"
 #include "robot/urdf_values.hpp"
 #include "robot/urdf_xml.hpp"

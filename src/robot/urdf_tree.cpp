@@ -1,6 +1,6 @@
 #include "robot/urdf_tree.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 namespace octoprox {
 namespace {

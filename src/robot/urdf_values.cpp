@@ -1,6 +1,6 @@
 #include "robot/urdf_values.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <charconv>
 #include <cmath>

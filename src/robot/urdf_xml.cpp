@@ -1,6 +1,6 @@
 #include "robot/urdf_xml.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 #include "robot/resource_paths.hpp"
 #include "robot/urdf_elements.hpp"
 #include "robot/urdf_tree.hpp"

@@ -1,6 +1,6 @@
 #include "robot/xml_text.hpp"
 
-#include "capi/error.hpp"
+#include "base/error.hpp"
 
 #include <algorithm>
 #include <cctype>
