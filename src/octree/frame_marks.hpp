@@ -64,6 +64,15 @@ public:
         }
         return brick_index * brick::kBits + local;
     }
+    // Whether `key` lies inside the box with `margin` cells to spare on
+    // every side.
+    bool holds(const uint32_t key[3], uint32_t margin) const {
+        for (int axis = 0; axis < 3; ++axis) {
+            const uint32_t k = key[axis] - lo_[axis];  // wraps below the box
+            if (k < margin || k + margin >= (bricks_[axis] << brick::kShift)) return false;
+        }
+        return true;
+    }
     // How a bit position moves when a key steps +1 along `axis` inside its
     // brick, and when it steps into the next brick.
     int64_t unit_step(int axis) const { return int64_t{1} << (brick::kShift * axis); }
@@ -72,7 +81,14 @@ public:
     // ORs another frame's crossed marks over the same box into these.
     void merge_crossed(const FrameMarks &other);
 
-    void mark_crossed(uint64_t bit) { crossed_[bit >> 6] |= uint64_t{1} << (bit & 63); }
+    // Most steps cross a cell some ray has crossed already, often one the
+    // previous step of another lane wrote: reading first and writing only a
+    // new mark keeps those steps off a chain of stores to one word.
+    void mark_crossed(uint64_t bit) {
+        uint64_t &word = crossed_[bit >> 6];
+        const uint64_t mark = uint64_t{1} << (bit & 63);
+        if ((word & mark) == 0) word |= mark;
+    }
     // After add_endpoint_marks.
     void mark_endpoint(uint64_t bit) { endpoint_[bit >> 6] |= uint64_t{1} << (bit & 63); }
 

@@ -19,7 +19,6 @@ struct RaySetup {
     double face_spacing[3];
     int step[3];
     float length;  // the ray parameter of the end point
-    double faces_per_metre[3];  // about 1 / face_spacing; 0 on an axis without steps
 };
 
 // OctoMap's computeRayKeys initialisation for origin -> end (keys differ).
@@ -36,9 +35,5 @@ struct BitMoves {
 };
 
 BitMoves bit_moves(const RaySetup &ray, const FrameMarks &marks);
-
-// Whether every key the walk can reach lies inside the marks' box, so that
-// no step needs a test.
-bool stays_in_box(const RaySetup &ray, const uint32_t origin[3], const FrameMarks &marks);
 
 }  // namespace octoprox

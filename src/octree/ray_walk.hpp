@@ -16,6 +16,13 @@ namespace octoprox {
 
 class BoundedOcTree;
 
+// How many rays a walk steps at once: four needs AVX2 (four_lanes_available)
+// and falls back to two without it; the best is four where the processor
+// has it.  Every choice marks the same cells.
+enum class RayLanes { kBest, kTwo, kFour };
+
+bool four_lanes_available();
+
 class RayWalker {
 public:
     // The origin must lie inside the map; origin_key is its key.
@@ -27,7 +34,8 @@ public:
     // outer faces) is not walked: its index goes to `strays`, for OctoMap's
     // computeRayKeys.
     void walk(const std::vector<octomap::point3d> &ends, const std::vector<octomap::OcTreeKey> &end_keys,
-              size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays) const;
+              size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays,
+              RayLanes lanes = RayLanes::kBest) const;
 
 private:
     const BoundedOcTree &tree_;
