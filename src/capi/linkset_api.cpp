@@ -1,6 +1,7 @@
 // C shims: link sets (robots made of shapes).
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
+#include "robot/mesh_vertices.hpp"
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -57,23 +58,6 @@ std::vector<std::array<uint32_t, 3>> read_triangles(const opx_shape &shape) {
     return triangles;
 }
 
-// A mesh is its triangles: vertices no triangle uses would only widen its
-// bounds (and so its cost boxes), so they are dropped and indices remapped.
-void keep_used_vertices(ShapeDef &def) {
-    std::vector<uint32_t> remap(def.vertices.size(), UINT32_MAX);
-    std::vector<Vec3> used;
-    for (auto &triangle : def.triangles) {
-        for (uint32_t &index : triangle) {
-            if (remap[index] == UINT32_MAX) {
-                remap[index] = static_cast<uint32_t>(used.size());
-                used.push_back(def.vertices[index]);
-            }
-            index = remap[index];
-        }
-    }
-    def.vertices = std::move(used);
-}
-
 ShapeDef read_shape(const opx_shape *in) {
     opx_shape shape = OPX_SHAPE_INIT;
     require_pointer(in, "shape");
@@ -98,7 +82,7 @@ ShapeDef read_shape(const opx_shape *in) {
     case OPX_SHAPE_MESH:
         def.vertices = read_vertices(shape);
         def.triangles = read_triangles(shape);
-        keep_used_vertices(def);
+        keep_used_vertices(def.vertices, def.triangles, VertexWeld::kNone);
         break;
     default: throw_invalid(format("shape->kind %d is not an OPX_SHAPE_* kind (1..6)", shape.kind));
     }

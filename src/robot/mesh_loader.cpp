@@ -1,6 +1,7 @@
 #include "robot/mesh_loader.hpp"
 
 #include "base/error.hpp"
+#include "robot/mesh_vertices.hpp"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -9,9 +10,7 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <fstream>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -64,45 +63,6 @@ void append_nodes(const aiScene &scene, const std::string &path, TriangleMesh &o
     }
 }
 
-// The bits of a vertex: equal positions weld, whatever their normals or
-// colours made the file keep apart.
-struct PositionHash {
-    size_t operator()(const std::array<uint64_t, 3> &bits) const {
-        return std::hash<uint64_t>()(bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^ bits[2]);
-    }
-};
-
-std::array<uint64_t, 3> position_bits(const Vec3 &v) {
-    std::array<uint64_t, 3> bits;
-    for (int i = 0; i < 3; ++i) {
-        const double coordinate = v[i] == 0.0 ? 0.0 : v[i];  // -0 welds with +0
-        std::memcpy(&bits[i], &coordinate, sizeof coordinate);
-    }
-    return bits;
-}
-
-// Drops vertices no triangle uses (they would only widen the bounds),
-// welds vertices at the same position (files split them by normal; every
-// pose update would place each copy), and rejects non-finite coordinates.
-void keep_used_vertices(TriangleMesh &mesh, const std::string &path) {
-    std::vector<uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
-    std::unordered_map<std::array<uint64_t, 3>, uint32_t, PositionHash> welded;
-    std::vector<Vec3> used;
-    for (auto &triangle : mesh.triangles) {
-        for (uint32_t &index : triangle) {
-            if (remap[index] == UINT32_MAX) {
-                const Vec3 &v = mesh.vertices[index];
-                if (!v.allFinite()) throw_corrupt("mesh file '" + path + "' has a vertex that is not finite");
-                const auto inserted = welded.emplace(position_bits(v), static_cast<uint32_t>(used.size()));
-                if (inserted.second) used.push_back(v);
-                remap[index] = inserted.first->second;
-            }
-            index = remap[index];
-        }
-    }
-    mesh.vertices = std::move(used);
-}
-
 }  // namespace
 
 TriangleMesh load_mesh_file(const std::string &path) {
@@ -121,7 +81,9 @@ TriangleMesh load_mesh_file(const std::string &path) {
     TriangleMesh mesh;
     append_nodes(*scene, path, mesh);
     if (mesh.triangles.empty()) throw_corrupt("mesh file '" + path + "' has no triangles");
-    keep_used_vertices(mesh, path);
+    keep_used_vertices(mesh.vertices, mesh.triangles, VertexWeld::kSamePosition);
+    for (const Vec3 &v : mesh.vertices)
+        if (!v.allFinite()) throw_corrupt("mesh file '" + path + "' has a vertex that is not finite");
     return mesh;
 }
 
