@@ -28,7 +28,7 @@ CollisionSettings collision_settings(const opx_collision_request &merged, const 
         settings.free_log_odds = static_cast<float>(log_odds(tree.params().free_threshold));
         const Aabb region{Vec3(merged.region_min[0], merged.region_min[1], merged.region_min[2]),
                           Vec3(merged.region_max[0], merged.region_max[1], merged.region_max[2])};
-        settings.region = (region.lo.array() < region.hi.array()).all() ? region : tree.known_bounds();
+        settings.region = region.has_volume() ? region : tree.known_bounds();
     }
     return settings;
 }

@@ -29,6 +29,12 @@ struct Aabb {
         const Vec3 gap = (b.lo - hi).cwiseMax(lo - b.hi).cwiseMax(0.0);
         return gap.squaredNorm();
     }
+    // Every edge longer than zero: boxes that only share a face have an
+    // intersection of no volume.
+    bool has_volume() const { return (lo.array() < hi.array()).all(); }
+    // The common part of the two boxes; without volume (or empty) when
+    // they do not overlap.
+    Aabb intersection(const Aabb &b) const { return Aabb{lo.cwiseMax(b.lo), hi.cwiseMin(b.hi)}; }
     double volume() const { return (hi - lo).cwiseMax(0.0).prod(); }
     double surface_area() const {
         const Vec3 e = (hi - lo).cwiseMax(0.0);

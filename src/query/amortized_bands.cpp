@@ -16,10 +16,6 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-Aabb intersection(const Aabb &a, const Aabb &b) { return Aabb{a.lo.cwiseMax(b.lo), a.hi.cwiseMin(b.hi)}; }
-
-bool has_volume(const Aabb &box) { return (box.lo.array() < box.hi.array()).all(); }
-
 }  // namespace
 
 void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
@@ -116,8 +112,8 @@ void AmortizedEngine::collect_cost(const LinkSet &links, const CollisionSettings
                 return box.overlaps(shape.box) && box.overlaps(region) && shape_may_touch(shape, box);
             },
             [&](int32_t item) {
-                const Aabb part = intersection(unknown_.cells.boxes[item], region);
-                if (!has_volume(part)) return;
+                const Aabb part = unknown_.cells.boxes[item].intersection(region);
+                if (!part.has_volume()) return;
                 if (!shape_touches_cell(shape, part.center(), part.half_extent(), narrow_tests)) return;
                 cost_.add(shape.link, unknown_.cells.keys[item], kUnknown, settings.unknown_probability, part);
             });

@@ -8,8 +8,6 @@
 namespace octoprox {
 namespace {
 
-Aabb intersection(const Aabb &a, const Aabb &b) { return Aabb{a.lo.cwiseMax(b.lo), a.hi.cwiseMin(b.hi)}; }
-
 auto order_key(uint32_t link, const CellKey &c) {
     return std::make_tuple(link, c.depth, c.key[0], c.key[1], c.key[2]);
 }
@@ -35,8 +33,8 @@ CostSummary CostCollector::finish(const std::vector<Aabb> &link_boxes, uint32_t 
     out.clear();
     for (const Pair &p : pairs_) {
         CostBox box;
-        box.box = intersection(p.region, link_boxes[p.link]);
-        if (!keep_flat && !(box.box.lo.array() < box.box.hi.array()).all()) continue;  // no volume: no box
+        box.box = p.region.intersection(link_boxes[p.link]);
+        if (!keep_flat && !box.box.has_volume()) continue;  // no volume: no box
         box.probability = p.probability;
         box.link = p.link, box.cell_class = p.cell_class, box.cell = p.cell;
         out.push_back(box);

@@ -110,9 +110,9 @@ void DirectCollider::test_obstacle(const Cell &cell, const PlacedShape &shape, c
 // Unknown space counts only inside the region; uncertain cells wholly.
 void DirectCollider::test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box) {
     const bool unknown = cell.node == nullptr;
-    const Aabb region = unknown ? Aabb{box.lo.cwiseMax(settings_.region.lo), box.hi.cwiseMin(settings_.region.hi)} : box;
+    const Aabb region = unknown ? box.intersection(settings_.region) : box;
     // A cube that only touches the region's face adds no volume: no box.
-    if (!(region.lo.array() < region.hi.array()).all()) return;
+    if (!region.has_volume()) return;
     if (!shape_touches_cell(shape, region.center(), region.half_extent(), outcome_.narrow_tests)) return;
     const double p = unknown ? settings_.unknown_probability : probability_from_log_odds(view_->log_odds(cell.node));
     cost_.add(shape.link, cell.key, unknown ? kUnknown : kUncertain, p, region);

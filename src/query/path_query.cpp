@@ -40,7 +40,7 @@ CostSummary PathQuery::finish_cost(uint32_t keep, std::vector<CostBox> &out) {
     }
     // Cells whose merged box still has no volume give no box.
     out.erase(std::remove_if(out.begin(), out.end(),
-                             [](const CostBox &b) { return !(b.box.lo.array() < b.box.hi.array()).all(); }),
+                             [](const CostBox &b) { return !b.box.has_volume(); }),
               out.end());
     return keep_costliest(out, keep);
 }
