@@ -3,7 +3,7 @@
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
-#include "query/narrow_phase.hpp"
+#include "narrowphase/narrow_phase.hpp"
 
 #include <cmath>
 #include <cstring>

@@ -2,7 +2,7 @@
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
-#include "query/narrow_phase.hpp"
+#include "narrowphase/narrow_phase.hpp"
 
 
 using namespace octoprox;

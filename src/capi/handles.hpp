@@ -2,9 +2,9 @@
 #pragma once
 
 #include "octree/sensor_octree.hpp"
-#include "query/amortized.hpp"
-#include "query/direct_collide.hpp"
-#include "query/direct_distance.hpp"
+#include "query/amortized/amortized_engine.hpp"
+#include "query/direct/direct_collide.hpp"
+#include "query/direct/direct_distance.hpp"
 #include "query/path_query.hpp"
 #include "robot/linkset.hpp"
 #include "robot/robot_model.hpp"

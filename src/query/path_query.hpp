@@ -4,9 +4,9 @@
 // motion sweeps through, from samples of the path).
 #pragma once
 
-#include "query/amortized.hpp"
-#include "query/direct_collide.hpp"
-#include "query/direct_distance.hpp"
+#include "query/amortized/amortized_engine.hpp"
+#include "query/direct/direct_collide.hpp"
+#include "query/direct/direct_distance.hpp"
 
 #include <memory>
 #include <vector>

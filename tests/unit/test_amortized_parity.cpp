@@ -5,12 +5,12 @@
 // contacts and distances, penetration per contact and signed distances.
 // The unknown cubes tile the map cube with the leaves; the cost and unknown
 // trees are built once per frame, on first need only.
-#include "broadphase/cell_boxes.hpp"
+#include "octree/cell_boxes.hpp"
+#include "octree/octree_cell.hpp"
 #include "octree/traverse.hpp"
-#include "query/amortized.hpp"
-#include "query/direct_collide.hpp"
-#include "query/direct_distance.hpp"
-#include "query/octree_cell.hpp"
+#include "query/amortized/amortized_engine.hpp"
+#include "query/direct/direct_collide.hpp"
+#include "query/direct/direct_distance.hpp"
 
 #include <gtest/gtest.h>
 

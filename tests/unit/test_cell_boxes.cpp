@@ -1,9 +1,9 @@
 // Cell extraction (T_1,1) against a plain walk over every leaf: the same
 // cells in each band, with the boxes of the query engines.
-#include "broadphase/cell_boxes.hpp"
+#include "octree/cell_boxes.hpp"
 
+#include "octree/octree_cell.hpp"
 #include "octree/traverse.hpp"
-#include "query/octree_cell.hpp"
 #include "unit_scenes.hpp"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-// The cubes where a shape's search enters the octree (query/cube_entry.hpp):
+// The cubes where a shape's search enters the octree (octree/cube_entry.hpp):
 // for random boxes on random maps, every obstacle leaf the box touches lies
 // in exactly one of the cubes found, each cube touches the box and holds an
 // obstacle, and there are at most eight, with or without the obstacle
 // boxes' integer test.  One finder serves every box of a
 // map, so its cached paths are reused across depths and octants.
-#include "query/cube_entry.hpp"
+#include "octree/cube_entry.hpp"
 #include "unit_scenes.hpp"
 
 #include <gtest/gtest.h>

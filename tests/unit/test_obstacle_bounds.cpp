@@ -4,7 +4,7 @@
 // the obstacle leaves below it (computed here from the leaves' keys).
 #include "octree/bounded_tree.hpp"
 #include "octree/octomap_io.hpp"
-#include "query/octree_cell.hpp"
+#include "octree/octree_cell.hpp"
 #include "unit_scenes.hpp"
 
 #include <gtest/gtest.h>

@@ -4,8 +4,8 @@
 // cylinders and capsules tight beside the round side, where the gap of
 // their oriented box is not (a cell off the side at 45 degrees between
 // the box's faces).
-#include "query/narrow_phase.hpp"
-#include "query/shape_distance.hpp"
+#include "narrowphase/narrow_phase.hpp"
+#include "narrowphase/shape_distance.hpp"
 
 #include <gtest/gtest.h>
 

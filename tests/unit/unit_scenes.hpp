@@ -2,7 +2,7 @@
 // synthetic scene and the geb079 map, each as the cells a context binds.
 #pragma once
 
-#include "broadphase/cell_boxes.hpp"
+#include "octree/cell_boxes.hpp"
 #include "octree/sensor_octree.hpp"
 
 #include <cstdint>

@@ -1,8 +1,8 @@
-#include "query/shape_penetration.hpp"
+#include "narrowphase/shape_penetration.hpp"
 
 #include "geometry/epa.hpp"
 #include "geometry/gjk.hpp"
-#include "query/narrow_phase.hpp"
+#include "narrowphase/narrow_phase.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
-#include "query/direct_collide.hpp"
+#include "query/direct/direct_collide.hpp"
 
-#include "query/narrow_phase.hpp"
-#include "query/shape_penetration.hpp"
+#include "narrowphase/narrow_phase.hpp"
+#include "narrowphase/shape_penetration.hpp"
 
 namespace octoprox {
 

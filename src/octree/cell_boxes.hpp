@@ -51,7 +51,7 @@ void extract_uncertain_boxes(const OctreeView &view, const CellBands &bands, Cel
 // Fills `unknown` (cleared first) with the unknown cubes: every missing
 // child of an inner node, at its own depth and size, or the whole map cube
 // when the map is empty; log-odds 0.  Unknown space is bounded by the map
-// cube, as in the query engines (query/octree_cell.hpp).
+// cube, as in the query engines (octree/octree_cell.hpp).
 void extract_unknown_boxes(const OctreeView &view, CellBoxes &unknown);
 
 }  // namespace octoprox

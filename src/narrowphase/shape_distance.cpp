@@ -1,4 +1,4 @@
-#include "query/shape_distance.hpp"
+#include "narrowphase/shape_distance.hpp"
 
 #include "geometry/cylinder_distance.hpp"
 #include "geometry/gjk.hpp"

@@ -6,10 +6,10 @@
 // robot's shape tree walks the octree from the root instead.
 #pragma once
 
+#include "octree/cube_entry.hpp"
+#include "octree/octree_cell.hpp"
 #include "octree/sensor_octree.hpp"
-#include "query/cube_entry.hpp"
 #include "query/distance_types.hpp"
-#include "query/octree_cell.hpp"
 #include "robot/linkset.hpp"
 
 #include <vector>

@@ -1,7 +1,7 @@
-#include "broadphase/cell_boxes.hpp"
+#include "octree/cell_boxes.hpp"
 
+#include "octree/octree_cell.hpp"
 #include "octree/sensor_octree.hpp"
-#include "query/octree_cell.hpp"
 
 namespace octoprox {
 

@@ -1,4 +1,4 @@
-#include "query/narrow_phase.hpp"
+#include "narrowphase/narrow_phase.hpp"
 
 #include "geometry/gjk.hpp"
 

@@ -3,10 +3,10 @@
 // per-frame preprocessing of the map.
 #pragma once
 
+#include "octree/octree_cell.hpp"
 #include "octree/sensor_octree.hpp"
 #include "query/collision_types.hpp"
 #include "query/cost_collector.hpp"
-#include "query/octree_cell.hpp"
 #include "robot/linkset.hpp"
 
 namespace octoprox {

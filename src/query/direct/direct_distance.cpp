@@ -1,9 +1,9 @@
-#include "query/direct_distance.hpp"
+#include "query/direct/direct_distance.hpp"
 
-#include "query/cube_entry.hpp"
-#include "query/narrow_phase.hpp"
-#include "query/shape_distance.hpp"
-#include "query/shape_penetration.hpp"
+#include "narrowphase/narrow_phase.hpp"
+#include "narrowphase/shape_distance.hpp"
+#include "narrowphase/shape_penetration.hpp"
+#include "octree/cube_entry.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 // it needs no robot tree to carry it down.
 #pragma once
 
-#include "query/octree_cell.hpp"
+#include "octree/octree_cell.hpp"
 
 namespace octoprox {
 

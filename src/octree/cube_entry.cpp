@@ -1,4 +1,4 @@
-#include "query/cube_entry.hpp"
+#include "octree/cube_entry.hpp"
 
 #include "broadphase/morton.hpp"
 

@@ -1,10 +1,10 @@
 // The amortized engine's queries: per robot shape over the bound trees,
 // with the direct engine's exact kernels and contact rules.
-#include "query/amortized.hpp"
+#include "query/amortized/amortized_engine.hpp"
 
-#include "query/narrow_phase.hpp"
-#include "query/shape_distance.hpp"
-#include "query/shape_penetration.hpp"
+#include "narrowphase/narrow_phase.hpp"
+#include "narrowphase/shape_distance.hpp"
+#include "narrowphase/shape_penetration.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // The amortized engine's bands: which cells of a frame it holds as boxes,
 // when each tree is (re)built, and the cost pass over the uncertain cells
 // and unknown cubes (paper IV.C).
-#include "query/amortized.hpp"
+#include "query/amortized/amortized_engine.hpp"
 
-#include "query/narrow_phase.hpp"
+#include "narrowphase/narrow_phase.hpp"
 
 #include <chrono>
 #include <type_traits>

@@ -15,7 +15,7 @@
 #pragma once
 
 #include "broadphase/box_tree.hpp"
-#include "broadphase/cell_boxes.hpp"
+#include "octree/cell_boxes.hpp"
 #include "octree/sensor_octree.hpp"
 #include "query/collision_types.hpp"
 #include "query/cost_collector.hpp"
