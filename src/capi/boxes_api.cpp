@@ -4,6 +4,7 @@
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
 #include "narrowphase/narrow_phase.hpp"
+#include "query/cell_description.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -74,17 +75,17 @@ opx_distance_result box_distance_to_abi(const DistanceOutcome &o, const Distance
     out.narrow_tests = o.narrow_tests;
     out.distance = o.found ? o.distance : s.cutoff;
     if (!o.found) return out;
-    const Aabb &box = q.amortized.caller_box(static_cast<size_t>(o.box_index));
+    const CellSummary cell = describe_caller_box(q.amortized.caller_box(static_cast<size_t>(o.box_index)));
     out.collided = o.distance <= kTouchTolerance ? 1 : 0;
-    out.cell_class = OPX_CELL_OCCUPIED;
+    out.cell_class = cell.cell_class;
     out.link = o.link, out.shape = o.shape;
     for (int axis = 0; axis < 3; ++axis) {
         out.point_on_link[axis] = o.on_link[axis];
         out.point_on_cell[axis] = o.on_cell[axis];
-        out.cell_center[axis] = box.center()[axis];
+        out.cell_center[axis] = cell.center[axis];
     }
-    out.cell_size = box.longest_edge();
-    out.cell_probability = 1.0;
+    out.cell_size = cell.size;
+    out.cell_probability = cell.probability;
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
 #include "narrowphase/narrow_phase.hpp"
+#include "query/cell_description.hpp"
 
 
 using namespace octoprox;
@@ -25,19 +26,19 @@ opx_distance_result result_to_abi(const DistanceOutcome &o, const DistanceSettin
         out.distance = s.cutoff;
         return out;
     }
-    const double res = tree.params().resolution;
+    const CellSummary cell = describe_cell(tree, o.cell, o.cell_unknown, o.cell_log_odds);
     // The same touch rule as collision queries, so the two agree.
     out.collided = o.distance <= kTouchTolerance ? 1 : 0;
-    out.cell_class = o.cell_unknown ? kUnknown : tree.classify_log_odds(o.cell_log_odds);
+    out.cell_class = cell.cell_class;
     out.link = o.link, out.shape = o.shape;
     out.distance = o.distance;
     for (int axis = 0; axis < 3; ++axis) {
         out.point_on_link[axis] = o.on_link[axis];
         out.point_on_cell[axis] = o.on_cell[axis];
-        out.cell_center[axis] = o.cell.center(axis, res);
+        out.cell_center[axis] = cell.center[axis];
     }
-    out.cell_size = o.cell.size(res);
-    out.cell_probability = o.cell_unknown ? 0.5 : probability_from_log_odds(o.cell_log_odds);
+    out.cell_size = cell.size;
+    out.cell_probability = cell.probability;
     return out;
 }
 

@@ -85,11 +85,4 @@ ShapePenetration shape_penetration(const PlacedShape &shape, const Vec3 &cell_ce
     return p;
 }
 
-void set_contact_penetration(const PlacedShape &shape, const Aabb &cell, Contact &contact) {
-    const ShapePenetration p = shape_penetration(shape, cell.center(), cell.half_extent());
-    contact.depth = p.depth;
-    const Vec3 middle = 0.5 * (p.on_link + p.on_cell);
-    for (int axis = 0; axis < 3; ++axis) contact.normal[axis] = p.normal[axis], contact.position[axis] = middle[axis];
-}
-
 }  // namespace octoprox

@@ -1,7 +1,6 @@
 // Penetration of a placed shape (padding included) into a cell it touches.
 #pragma once
 
-#include "query/collision_types.hpp"
 #include "robot/shape.hpp"
 
 namespace octoprox {
@@ -15,9 +14,5 @@ struct ShapePenetration {
 
 // For a shape touching the cell; for a mesh, its deepest triangle.
 ShapePenetration shape_penetration(const PlacedShape &shape, const Vec3 &cell_center, const Vec3 &cell_half);
-
-// A contact's depth, normal and position (midway between the two witness
-// points), as both engines report them.
-void set_contact_penetration(const PlacedShape &shape, const Aabb &cell, Contact &contact);
 
 }  // namespace octoprox

@@ -1,5 +1,7 @@
 #include "query/cost_collector.hpp"
 
+#include "narrowphase/narrow_phase.hpp"
+#include "octree/sensor_octree.hpp"
 #include "robot/linkset.hpp"
 
 #include <algorithm>
@@ -13,6 +15,15 @@ auto order_key(uint32_t link, const CellKey &c) {
 }
 
 }  // namespace
+
+void CostCollector::offer(const PlacedShape &shape, const CellKey &key, bool unknown, float log_odds,
+                          const Aabb &cell, const CollisionSettings &settings, uint64_t &narrow_tests) {
+    const Aabb part = unknown ? cell.intersection(settings.region) : cell;
+    if (!part.has_volume()) return;
+    if (!shape_touches_cell(shape, part.center(), part.half_extent(), narrow_tests)) return;
+    const double p = unknown ? settings.unknown_probability : probability_from_log_odds(log_odds);
+    add(shape.link, key, unknown ? kUnknown : kUncertain, p, part);
+}
 
 void CostCollector::add(uint32_t link, const CellKey &cell, int cell_class, double probability,
                         const Aabb &region) {

@@ -6,6 +6,7 @@
 
 #include "geometry/aabb.hpp"
 #include "octree/octree_view.hpp"
+#include "query/collision_types.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -26,9 +27,18 @@ struct CostSummary {
     uint64_t box_count = 0;   // all boxes (the kept ones are the largest)
 };
 
+struct PlacedShape;
+
 class CostCollector {
 public:
     void clear() { pairs_.clear(); }
+    // The cost rule of both engines, for a cost cell (box `cell`) that
+    // `shape` may touch: an uncertain cell counts wholly, a cube of unknown
+    // space only clipped to settings.region (a cube that only touches the
+    // region adds no volume: nothing); the padded shape must touch the part
+    // that counts.
+    void offer(const PlacedShape &shape, const CellKey &key, bool unknown, float log_odds, const Aabb &cell,
+               const CollisionSettings &settings, uint64_t &narrow_tests);
     // `region` is the part of the cell that counts (the cell itself, or
     // its intersection with the region of interest for unknown space).
     void add(uint32_t link, const CellKey &cell, int cell_class, double probability, const Aabb &region);

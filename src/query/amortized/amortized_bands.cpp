@@ -88,10 +88,9 @@ AmortizedStats AmortizedEngine::stats() const {
                           build_ms_};
 }
 
-// The direct engine's cost rules (DirectCollider::test_cost): an uncertain
-// cell counts wholly, an unknown cube only clipped to the region (a cube
-// that only touches the region adds no volume: no box); unknown space that
-// is an obstacle (OPX_UNKNOWN_OCCUPIED) is no cost.
+// Over the uncertain cells and, unless unknown space is an obstacle
+// (OPX_UNKNOWN_OCCUPIED: then no cost), the unknown cubes inside the
+// region, with the cost rule of both engines (CostCollector::offer).
 void AmortizedEngine::collect_cost(const LinkSet &links, const CollisionSettings &settings, uint64_t &narrow_tests) {
     cost_.clear();
     const bool unknown_cost = !settings.unknown_occupied;
@@ -101,10 +100,8 @@ void AmortizedEngine::collect_cost(const LinkSet &links, const CollisionSettings
         uncertain_.tree.for_each_leaf_if(
             [&](const Aabb &box) { return box.overlaps(shape.box) && shape_may_touch(shape, box); },
             [&](int32_t item) {
-                const Aabb &cell = uncertain_.cells.boxes[item];
-                if (!shape_touches_cell(shape, cell.center(), cell.half_extent(), narrow_tests)) return;
-                cost_.add(shape.link, uncertain_.cells.keys[item], kUncertain,
-                          probability_from_log_odds(uncertain_.cells.log_odds[item]), cell);
+                cost_.offer(shape, uncertain_.cells.keys[item], false, uncertain_.cells.log_odds[item],
+                            uncertain_.cells.boxes[item], settings, narrow_tests);
             });
         if (!unknown_cost) continue;
         unknown_.tree.for_each_leaf_if(
@@ -112,10 +109,8 @@ void AmortizedEngine::collect_cost(const LinkSet &links, const CollisionSettings
                 return box.overlaps(shape.box) && box.overlaps(region) && shape_may_touch(shape, box);
             },
             [&](int32_t item) {
-                const Aabb part = unknown_.cells.boxes[item].intersection(region);
-                if (!part.has_volume()) return;
-                if (!shape_touches_cell(shape, part.center(), part.half_extent(), narrow_tests)) return;
-                cost_.add(shape.link, unknown_.cells.keys[item], kUnknown, settings.unknown_probability, part);
+                cost_.offer(shape, unknown_.cells.keys[item], true, 0.0f, unknown_.cells.boxes[item], settings,
+                            narrow_tests);
             });
     }
     refine(uncertain_);

@@ -3,8 +3,9 @@
 #include "query/amortized/amortized_engine.hpp"
 
 #include "narrowphase/narrow_phase.hpp"
-#include "narrowphase/shape_distance.hpp"
-#include "narrowphase/shape_penetration.hpp"
+#include "query/cell_description.hpp"
+#include "query/contact_sink.hpp"
+#include "query/nearest_pair.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,44 +14,25 @@
 namespace octoprox {
 
 // One shape against one band: boxes first, the shape's own cull, then the
-// exact test.  Contacts follow the direct engine's rules (max_contacts,
-// truncated).  Returns true when the query is done.
+// contact sink's exact test, until the obstacle answer is settled.
 template <class Describe>
-bool AmortizedEngine::collide_band(const Band &band, const PlacedShape &shape, const CollisionSettings &settings,
-                                   std::vector<Contact> &contacts, CollisionOutcome &out, Describe &&describe) {
-    bool done = false;
+void AmortizedEngine::collide_band(const Band &band, const PlacedShape &shape, ContactSink &sink,
+                                   Describe &&describe) {
     band.tree.for_each_leaf_if(
         [&](const Aabb &box) { return box.overlaps(shape.box) && shape_may_touch(shape, box); },
-        [&](int32_t item) {
-            const Aabb &cell = band.cells.boxes[item];
-            if (!shape_touches_cell(shape, cell.center(), cell.half_extent(), out.narrow_tests)) return true;
-            out.collided = true;
-            if (contacts.size() >= settings.max_contacts) {
-                out.truncated = settings.max_contacts > 0;
-                return !(done = true);
-            }
-            Contact c;
-            c.link = shape.link, c.shape = shape.shape;
-            describe(band, item, c);
-            if (settings.penetration) set_contact_penetration(shape, cell, c);
-            contacts.push_back(c);
-            if (contacts.size() >= settings.max_contacts && settings.max_contacts <= 1) done = true;
-            return !done;
-        });
-    return done;
+        [&](int32_t item) { return !sink.offer(shape, band.cells.boxes[item], [&] { return describe(band, item); }); });
 }
 
 template <class Describe>
 CollisionOutcome AmortizedEngine::collide_bound(const LinkSet &links, const CollisionSettings &settings,
                                                 bool with_unknown, std::vector<Contact> &contacts,
                                                 Describe &&describe) {
-    contacts.clear();
     CollisionOutcome out;
-    bool done = false;
+    ContactSink sink(settings, contacts, out);
     for (const PlacedShape &shape : links.placed()) {
-        if (done || shape.box.empty()) continue;
-        done = collide_band(obstacles_, shape, settings, contacts, out, describe);
-        if (!done && with_unknown) done = collide_band(unknown_, shape, settings, contacts, out, describe);
+        if (sink.settled() || shape.box.empty()) continue;
+        collide_band(obstacles_, shape, sink, describe);
+        if (!sink.settled() && with_unknown) collide_band(unknown_, shape, sink, describe);
     }
     refine(obstacles_);
     if (with_unknown) refine(unknown_);
@@ -71,24 +53,12 @@ void AmortizedEngine::distance_band(const Band &band, const PlacedShape &shape, 
     band.tree.for_each_by_distance(
         [&](const Aabb &box) { return std::max(std::sqrt(shape.box.squared_distance(box)), shape_lower_bound(shape, box)); },
         tree_bound(), [&](int32_t item, double) {
-            const Aabb &cell = band.cells.boxes[item];
             ShapeCellDistance d;
-            // Signed: a touching cell (distance 0) must still be found once in contact.
-            const double limit = signed_distance ? std::max(bound, 1e-300) : bound;
-            if (!shape_cell_distance(shape, cell.center(), cell.half_extent(), limit, d, best.narrow_tests))
+            if (!nearer_pair(shape, band.cells.boxes[item], bound, signed_distance, d, best.narrow_tests))
                 return tree_bound();
-            if (signed_distance && d.distance <= 0.0) {
-                const ShapePenetration p = shape_penetration(shape, cell.center(), cell.half_extent());
-                if (-p.depth >= bound) return tree_bound();
-                d.distance = -p.depth, d.on_shape = p.on_link, d.on_cell = p.on_cell;
-            }
             bound = d.distance;
             if (per_link) (*per_link)[shape.link] = d.distance;
-            if (!best.found || d.distance < best.distance) {
-                best.found = true, best.distance = d.distance, best.on_link = d.on_shape, best.on_cell = d.on_cell;
-                best.link = shape.link, best.shape = shape.shape;
-                describe(band, item, best);
-            }
+            if (keep_if_nearer(shape, d, best)) describe(band, item, best);
             if (signed_distance) return tree_bound();
             return bound <= 0.0 ? -1.0 : bound;
         });
@@ -119,15 +89,9 @@ CollisionOutcome AmortizedEngine::collide(const SensorOctree &tree, const LinkSe
     bind(tree, settings.threshold_log_odds);
     if (settings.unknown_occupied || settings.cost) bind_unknown(tree);
     if (settings.cost) bind_uncertain(tree, settings.threshold_log_odds, settings.free_log_odds);
-    const double res = tree.params().resolution;
-    CollisionOutcome out = collide_bound(
-        links, settings, settings.unknown_occupied, contacts, [&](const Band &band, int32_t item, Contact &c) {
-            const CellKey &key = band.cells.keys[item];
-            for (int axis = 0; axis < 3; ++axis) c.center[axis] = key.center(axis, res);
-            c.size = key.size(res);
-            const float l = band.cells.log_odds[item];
-            c.cell_class = band.unknown ? kUnknown : tree.classify_log_odds(l);
-            c.probability = band.unknown ? 0.5 : probability_from_log_odds(l);
+    CollisionOutcome out =
+        collide_bound(links, settings, settings.unknown_occupied, contacts, [&](const Band &band, int32_t item) {
+            return describe_cell(tree, band.cells.keys[item], band.unknown, band.cells.log_odds[item]);
         });
     cost_.clear();
     if (settings.cost) collect_cost(links, settings, out.narrow_tests);
@@ -140,20 +104,14 @@ DistanceOutcome AmortizedEngine::distance(const SensorOctree &tree, const LinkSe
     if (settings.unknown_occupied) bind_unknown(tree);
     return distance_bound(links, settings, settings.unknown_occupied, per_link,
                           [&](const Band &band, int32_t item, DistanceOutcome &best) {
-                              best.cell = band.cells.keys[item];
-                              best.cell_unknown = band.unknown;
-                              best.cell_log_odds = band.unknown ? 0.0f : band.cells.log_odds[item];
+                              set_cell(best, band.cells.keys[item], band.unknown, band.cells.log_odds[item]);
                           });
 }
 
 CollisionOutcome AmortizedEngine::collide_boxes(const LinkSet &links, const CollisionSettings &settings,
                                                 std::vector<Contact> &contacts) {
-    return collide_bound(links, settings, false, contacts, [&](const Band &band, int32_t item, Contact &c) {
-        const Aabb &box = band.cells.boxes[item];
-        for (int axis = 0; axis < 3; ++axis) c.center[axis] = box.center()[axis];
-        c.size = box.longest_edge();
-        c.cell_class = kOccupied;
-        c.probability = 1.0;
+    return collide_bound(links, settings, false, contacts, [&](const Band &band, int32_t item) {
+        return describe_caller_box(band.cells.boxes[item]);
     });
 }
 

@@ -26,6 +26,8 @@
 
 namespace octoprox {
 
+class ContactSink;
+
 struct AmortizedOptions {
     uint32_t refine_steps = 1;  // root-to-leaf refinement paths per query and tree used
     int morton_bits = 10;       // lattice bits per axis
@@ -93,14 +95,14 @@ private:
     void collect_cost(const LinkSet &links, const CollisionSettings &settings, uint64_t &narrow_tests);
 
     // The loops shared by octree cells and caller boxes, over the obstacle
-    // band and, with_unknown, the unknown cubes; `describe` fills what an
-    // item of a band is (cell or box) into a contact / the best outcome.
+    // band and, with_unknown, the unknown cubes; `describe` tells what an
+    // item of a band is (cell or box): a CellSummary for a contact, the
+    // best outcome's cell for distance.
     template <class Describe>
     CollisionOutcome collide_bound(const LinkSet &links, const CollisionSettings &settings, bool with_unknown,
                                    std::vector<Contact> &contacts, Describe &&describe);
     template <class Describe>
-    bool collide_band(const Band &band, const PlacedShape &shape, const CollisionSettings &settings,
-                      std::vector<Contact> &contacts, CollisionOutcome &out, Describe &&describe);
+    void collide_band(const Band &band, const PlacedShape &shape, ContactSink &sink, Describe &&describe);
     template <class Describe>
     DistanceOutcome distance_bound(const LinkSet &links, const DistanceSettings &settings, bool with_unknown,
                                    std::vector<double> *per_link, Describe &&describe);

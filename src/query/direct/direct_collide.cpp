@@ -1,7 +1,6 @@
 #include "query/direct/direct_collide.hpp"
 
 #include "narrowphase/narrow_phase.hpp"
-#include "narrowphase/shape_penetration.hpp"
 
 namespace octoprox {
 
@@ -9,12 +8,12 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
                                          const CollisionSettings &settings,
                                          std::vector<Contact> &contacts) {
     const OctreeView view = tree.view();
-    view_ = &view, tree_ = &tree, links_ = &links, settings_ = settings, contacts_ = &contacts;
-    contacts.clear();
-    cost_.clear();
+    view_ = &view, tree_ = &tree, links_ = &links, settings_ = settings;
     outcome_ = CollisionOutcome();
+    ContactSink sink(settings_, contacts, outcome_);
+    contacts_ = &sink;
+    cost_.clear();
     done_ = false;
-    obstacles_settled_ = false;
     use_obstacle_boxes_ = !settings.unknown_occupied && !settings.cost &&
                           settings.threshold_log_odds >= view.bounds_threshold();
     box_pad_ = obstacle_box_pad(view.resolution());
@@ -25,7 +24,7 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
             links.tree().node(links.tree().root()).box.overlaps(root.box))
             recurse(root, links.tree().root());
     }
-    view_ = nullptr;
+    view_ = nullptr, contacts_ = nullptr;
     return outcome_;
 }
 
@@ -86,63 +85,30 @@ bool DirectCollider::skip_child(const Cell &child) const {
 void DirectCollider::test_leaf_pair(const Cell &cell, int32_t robot_node) {
     const PlacedShape &shape = links_->placed()[links_->tree().node(robot_node).item];
     if (shape.box.empty()) return;  // a disabled link
-    const Aabb &box = cell.box;
     if (cell.node == nullptr) {
-        if (settings_.unknown_occupied) test_obstacle(cell, shape, box);
-        else if (settings_.cost) test_cost(cell, shape, box);
+        if (settings_.unknown_occupied) test_obstacle(cell, shape);
+        else if (settings_.cost) test_cost(cell, shape);
         return;
     }
     const float l = view_->log_odds(cell.node);
-    if (l >= settings_.threshold_log_odds) test_obstacle(cell, shape, box);
-    else if (settings_.cost && l >= settings_.free_log_odds) test_cost(cell, shape, box);
+    if (l >= settings_.threshold_log_odds) test_obstacle(cell, shape);
+    else if (settings_.cost && l >= settings_.free_log_odds) test_cost(cell, shape);
 }
 
-void DirectCollider::settle_obstacles() {
-    obstacles_settled_ = true;
-    done_ = !settings_.cost;
-}
-
-void DirectCollider::test_obstacle(const Cell &cell, const PlacedShape &shape, const Aabb &box) {
-    if (obstacles_settled_) return;
-    if (shape_touches_cell(shape, box.center(), box.half_extent(), outcome_.narrow_tests)) record(cell, shape);
-}
-
-// Unknown space counts only inside the region; uncertain cells wholly.
-void DirectCollider::test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box) {
+// Once the obstacle answer is settled, a plain query is done; a cost query
+// goes on for the cost.
+void DirectCollider::test_obstacle(const Cell &cell, const PlacedShape &shape) {
     const bool unknown = cell.node == nullptr;
-    const Aabb region = unknown ? box.intersection(settings_.region) : box;
-    // A cube that only touches the region's face adds no volume: no box.
-    if (!region.has_volume()) return;
-    if (!shape_touches_cell(shape, region.center(), region.half_extent(), outcome_.narrow_tests)) return;
-    const double p = unknown ? settings_.unknown_probability : probability_from_log_odds(view_->log_odds(cell.node));
-    cost_.add(shape.link, cell.key, unknown ? kUnknown : kUncertain, p, region);
+    const bool settled = contacts_->offer(shape, cell.box, [&] {
+        return describe_cell(*tree_, cell.key, unknown, unknown ? 0.0f : view_->log_odds(cell.node));
+    });
+    if (settled) done_ = !settings_.cost;
 }
 
-// Contacts up to max_contacts; one more found means the list is
-// incomplete (truncated).  Once the obstacle answer is settled, a plain
-// query is done; a cost query goes on for the cost.
-void DirectCollider::record(const Cell &cell, const PlacedShape &shape) {
-    outcome_.collided = true;
-    if (contacts_->size() >= settings_.max_contacts) {
-        outcome_.truncated = settings_.max_contacts > 0;
-        settle_obstacles();
-        return;
-    }
-    Contact c;
-    c.link = shape.link, c.shape = shape.shape;
-    const double resolution = view_->resolution();
-    for (int axis = 0; axis < 3; ++axis) c.center[axis] = cell.key.center(axis, resolution);
-    c.size = cell.key.size(resolution);
-    if (cell.node == nullptr) {
-        c.cell_class = kUnknown;
-        c.probability = 0.5;
-    } else {
-        c.cell_class = tree_->classify_log_odds(view_->log_odds(cell.node));
-        c.probability = probability_from_log_odds(view_->log_odds(cell.node));
-    }
-    if (settings_.penetration) set_contact_penetration(shape, cell.box, c);
-    contacts_->push_back(c);
-    if (contacts_->size() >= settings_.max_contacts && settings_.max_contacts <= 1) settle_obstacles();
+void DirectCollider::test_cost(const Cell &cell, const PlacedShape &shape) {
+    const bool unknown = cell.node == nullptr;
+    cost_.offer(shape, cell.key, unknown, unknown ? 0.0f : view_->log_odds(cell.node), cell.box, settings_,
+                outcome_.narrow_tests);
 }
 
 }  // namespace octoprox

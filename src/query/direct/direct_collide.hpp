@@ -6,6 +6,7 @@
 #include "octree/octree_cell.hpp"
 #include "octree/sensor_octree.hpp"
 #include "query/collision_types.hpp"
+#include "query/contact_sink.hpp"
 #include "query/cost_collector.hpp"
 #include "robot/linkset.hpp"
 
@@ -27,10 +28,8 @@ private:
     void descend_octree(const Cell &cell, int32_t robot_node);
     void test_leaf_pair(const Cell &cell, int32_t robot_node);
     bool skip_child(const Cell &child) const;
-    void test_obstacle(const Cell &cell, const PlacedShape &shape, const Aabb &box);
-    void test_cost(const Cell &cell, const PlacedShape &shape, const Aabb &box);
-    void record(const Cell &cell, const PlacedShape &shape);
-    void settle_obstacles();
+    void test_obstacle(const Cell &cell, const PlacedShape &shape);
+    void test_cost(const Cell &cell, const PlacedShape &shape);
     // Where a cell's obstacles can lie (octree_cell.hpp obstacle_bounds).
     Aabb bounding_box(const Cell &cell) const {
         return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_);
@@ -40,11 +39,10 @@ private:
     const SensorOctree *tree_ = nullptr;
     const LinkSet *links_ = nullptr;
     CollisionSettings settings_;
-    std::vector<Contact> *contacts_ = nullptr;
+    ContactSink *contacts_ = nullptr;  // the query's, while it runs
     CollisionOutcome outcome_;
     CostCollector cost_;
     bool done_ = false;
-    bool obstacles_settled_ = false;  // no more contact information needed
     // The map's obstacle boxes hold for this query: obstacles are leaves at
     // or above its threshold, and cost (which also looks for uncertain and
     // unknown cells) is off.

@@ -1,9 +1,9 @@
 #include "query/direct/direct_distance.hpp"
 
 #include "narrowphase/narrow_phase.hpp"
-#include "narrowphase/shape_distance.hpp"
-#include "narrowphase/shape_penetration.hpp"
 #include "octree/cube_entry.hpp"
+#include "query/cell_description.hpp"
+#include "query/nearest_pair.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -249,23 +249,13 @@ void DirectDistance::test_leaf_pair(const Cell &cell, const AabbTreeNode &robot)
     const PlacedShape &shape = placed_[robot.item];
     if (shape.box.empty()) return;  // a disabled link
     if (only_link_ >= 0 && shape.link != static_cast<uint32_t>(only_link_)) return;
-    const Aabb &box = cell.box;
+    // The bound is the best pair's distance once one is found: a pair below
+    // it is the new best.
     ShapeCellDistance d;
-    const double search_bound = std::max(bound_, settings_.signed_distance ? 1e-300 : 0.0);
-    if (!shape_cell_distance(shape, box.center(), box.half_extent(), search_bound, d, best_.narrow_tests)) return;
-    if (settings_.signed_distance && d.distance <= 0.0) {
-        const ShapePenetration p = shape_penetration(shape, box.center(), box.half_extent());
-        if (best_.found && -p.depth >= best_.distance) return;
-        d.distance = -p.depth, d.on_shape = p.on_link, d.on_cell = p.on_cell;
-    }
-    best_.found = true;
-    best_.distance = d.distance;
-    best_.on_link = d.on_shape;
-    best_.on_cell = d.on_cell;
-    best_.link = shape.link, best_.shape = shape.shape;
-    best_.cell = cell.key;
-    best_.cell_unknown = cell.node == nullptr;
-    best_.cell_log_odds = cell.node == nullptr ? 0.0f : view_->log_odds(cell.node);
+    if (!nearer_pair(shape, cell.box, bound_, settings_.signed_distance, d, best_.narrow_tests)) return;
+    if (!keep_if_nearer(shape, d, best_)) return;
+    const bool unknown = cell.node == nullptr;
+    set_cell(best_, cell.key, unknown, unknown ? 0.0f : view_->log_odds(cell.node));
     set_bound(d.distance);
 }
 
