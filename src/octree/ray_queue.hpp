@@ -14,8 +14,6 @@
 
 namespace octoprox {
 
-class BoundedOcTree;
-
 // One ray's place in the marks.  Inside the box a key and its bit
 // determine each other, so the bit alone is stepped and compared.
 struct LaneRay {
@@ -35,11 +33,11 @@ struct LaneRay {
 // The rays of one range, handed to the lanes one after another.
 class RayQueue {
 public:
-    RayQueue(const BoundedOcTree &tree, const octomap::point3d &origin, const octomap::OcTreeKey &origin_key,
+    RayQueue(const RayOrigin &origin, const octomap::OcTreeKey &origin_key,
              const std::vector<octomap::point3d> &ends, const std::vector<octomap::OcTreeKey> &end_keys,
              size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays)
-        : tree_(tree), origin_(origin), origin_key_(origin_key), ends_(ends), end_keys_(end_keys), next_(begin),
-          end_(end), marks_(marks), strays_(strays) {
+        : origin_(origin), origin_key_(origin_key), ends_(ends), end_keys_(end_keys), next_(begin), end_(end),
+          marks_(marks), strays_(strays) {
         for (int i = 0; i < 3; ++i) origin_cell_[i] = origin_key[i];
         origin_inside_ = marks.holds(origin_cell_, kOriginMargin);
         origin_bit_ = origin_inside_ ? marks.bit_of(origin_cell_) : 0;
@@ -47,24 +45,40 @@ public:
 
     // The next ray with cells to walk, false when none is left.
     bool next(LaneRay &ray, RaySetup &setup) {
+        size_t index;
+        if (!next_index(index)) return false;
+        setup = ray_setup(origin_, ends_[index]);
+        start(index, setup, ray);
+        return true;
+    }
+
+    // The index of the next ray with cells to walk, false when none is
+    // left.  Rays inside the origin's cell are skipped, rays that might
+    // leave the marks go to the strays.
+    bool next_index(size_t &index) {
         while (next_ < end_) {
-            const size_t index = next_++;
+            index = next_++;
             const octomap::OcTreeKey &key = end_keys_[index];
             if (key == origin_key_) continue;  // inside the origin's cell: no cell to free
             const uint32_t end_cell[3] = {key[0], key[1], key[2]};
-            if (!origin_inside_ || !marks_.holds(end_cell, kEndMargin)) {
-                strays_.push_back(static_cast<uint32_t>(index));
-                continue;
-            }
-            setup = ray_setup(tree_, origin_key_, origin_, ends_[index]);
-            ray.moves = bit_moves(setup, marks_);
-            ray.bit = origin_bit_;
-            ray.last_bit = marks_.bit_of(end_cell);
-            marks_.mark_crossed(origin_bit_);
-            return true;
+            if (origin_inside_ && marks_.holds(end_cell, kEndMargin)) return true;
+            strays_.push_back(static_cast<uint32_t>(index));
         }
         return false;
     }
+
+    // Starts ray `index` in the origin's cell, which it marks.
+    void start(size_t index, const RaySetup &setup, LaneRay &ray) {
+        const octomap::OcTreeKey &key = end_keys_[index];
+        const uint32_t end_cell[3] = {key[0], key[1], key[2]};
+        ray.moves = bit_moves(setup, marks_);
+        ray.bit = origin_bit_;
+        ray.last_bit = marks_.bit_of(end_cell);
+        marks_.mark_crossed(origin_bit_);
+    }
+
+    const RayOrigin &origin() const { return origin_; }
+    const octomap::point3d &end_point(size_t index) const { return ends_[index]; }
 
     // The origin's cell, marked as soon as a ray is handed out.
     uint64_t origin_bit() const { return origin_bit_; }
@@ -80,8 +94,7 @@ private:
     static constexpr uint32_t kOriginMargin = 2;
     static constexpr uint32_t kEndMargin = 2;
 
-    const BoundedOcTree &tree_;
-    const octomap::point3d origin_;
+    const RayOrigin &origin_;
     const octomap::OcTreeKey origin_key_;
     uint32_t origin_cell_[3];
     bool origin_inside_ = false;

@@ -1,5 +1,6 @@
-// Built with -ffp-contract=off (src/CMakeLists.txt): a fused multiply-add
-// would round differently from OctoMap's separate operations.
+// Built with -ffp-contract=off and -fno-tree-vectorize (src/CMakeLists.txt):
+// a fused multiply-add would round differently from OctoMap's separate
+// operations, and GCC 12's vectorizer drops float roundings.
 #include "octree/ray_setup.hpp"
 
 #include "octree/bounded_tree.hpp"
@@ -10,15 +11,31 @@
 
 namespace octoprox {
 
-// The direction and length in float, the face positions in double from
-// the origin cell's centre and a float half-cell, as OctoMap has them.
-RaySetup ray_setup(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_key,
-                   const octomap::point3d &origin, const octomap::point3d &end) {
+RayOrigin ray_origin(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_key,
+                     const octomap::point3d &origin) {
+    RayOrigin o;
+    o.point = origin;
+    o.resolution = tree.getResolution();
+    // OctoMap moves from the cell's centre to a face by a half cell
+    // rounded to float.
+    const float half_cell[2] = {static_cast<float>(-1 * o.resolution * 0.5),
+                                static_cast<float>(1 * o.resolution * 0.5)};
+    for (int i = 0; i < 3; ++i)
+        for (int side = 0; side < 2; ++side) {
+            double face = tree.keyToCoord(origin_key[i]);
+            face += half_cell[side];
+            o.to_face[i][side] = face - origin(i);
+        }
+    return o;
+}
+
+// The direction and length in float, the face parameters in double, as
+// OctoMap has them.
+RaySetup ray_setup(const RayOrigin &origin, const octomap::point3d &end) {
     RaySetup s;
-    octomap::point3d direction = end - origin;
+    octomap::point3d direction = end - origin.point;
     s.length = static_cast<float>(direction.norm());
     direction /= s.length;
-    const double resolution = tree.getResolution();
     for (int i = 0; i < 3; ++i) {
         const float d = direction(i);
         s.step[i] = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
@@ -27,10 +44,8 @@ RaySetup ray_setup(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_k
             s.face_spacing[i] = std::numeric_limits<double>::max();
             continue;
         }
-        double face = tree.keyToCoord(origin_key[i]);
-        face += static_cast<float>(s.step[i] * resolution * 0.5);
-        s.next_face[i] = (face - origin(i)) / d;
-        s.face_spacing[i] = resolution / std::fabs(d);
+        s.next_face[i] = origin.to_face[i][s.step[i] > 0] / d;
+        s.face_spacing[i] = origin.resolution / std::fabs(d);
     }
     return s;
 }

@@ -21,9 +21,24 @@ struct RaySetup {
     float length;  // the ray parameter of the end point
 };
 
+// What every ray of a frame shares: its origin and, per axis, the
+// distance from the origin to the origin cell's face on either side
+// ([axis][0] for the face a negative step crosses, [1] a positive one).
+struct RayOrigin {
+    octomap::point3d point;
+    double to_face[3][2];
+    double resolution;
+};
+
+RayOrigin ray_origin(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_key,
+                     const octomap::point3d &origin);
+
 // OctoMap's computeRayKeys initialisation for origin -> end (keys differ).
-RaySetup ray_setup(const BoundedOcTree &tree, const octomap::OcTreeKey &origin_key,
-                   const octomap::point3d &origin, const octomap::point3d &end);
+RaySetup ray_setup(const RayOrigin &origin, const octomap::point3d &end);
+
+// The same for four rays at once with AVX2 (ray_setup_avx2.cpp), only
+// where four_lanes_available() (ray_walk.hpp) says so.
+void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetup out[4]);
 
 // How one step along an axis moves the mark's bit: x + 8 y + 64 z inside
 // a brick, the brick's index times 512 across bricks.

@@ -45,12 +45,12 @@ void walk_two(RayQueue &queue, FrameMarks &marks) {
 
 RayWalker::RayWalker(const BoundedOcTree &tree, const octomap::point3d &origin,
                      const octomap::OcTreeKey &origin_key)
-    : tree_(tree), origin_(origin), origin_key_(origin_key) {}
+    : origin_(ray_origin(tree, origin_key, origin)), origin_key_(origin_key) {}
 
 void RayWalker::walk(const std::vector<octomap::point3d> &ends, const std::vector<octomap::OcTreeKey> &end_keys,
                      size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays,
                      RayLanes lanes) const {
-    RayQueue queue(tree_, origin_, origin_key_, ends, end_keys, begin, end, marks, strays);
+    RayQueue queue(origin_, origin_key_, ends, end_keys, begin, end, marks, strays);
     const bool four = lanes != RayLanes::kTwo && four_lanes_available();
     if (four) walk_four(queue, marks);
     else walk_two(queue, marks);

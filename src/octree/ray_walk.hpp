@@ -6,6 +6,7 @@
 #pragma once
 
 #include "octree/frame_marks.hpp"
+#include "octree/ray_setup.hpp"
 
 #include <octomap/OcTreeKey.h>
 #include <octomap/octomap_types.h>
@@ -38,8 +39,7 @@ public:
               RayLanes lanes = RayLanes::kBest) const;
 
 private:
-    const BoundedOcTree &tree_;
-    octomap::point3d origin_;
+    RayOrigin origin_;
     octomap::OcTreeKey origin_key_;
 };
 

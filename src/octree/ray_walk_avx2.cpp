@@ -30,6 +30,38 @@ namespace {
 
 constexpr int kLanes = 4;
 
+// The queue's rays, set up four at a time (ray_setup_four) and handed out
+// one by one.
+class RayBatch {
+public:
+    explicit RayBatch(RayQueue &queue) : queue_(queue) {}
+
+    bool next(LaneRay &ray, RaySetup &setup) {
+        if (taken_ == count_ && !fill()) return false;
+        const int i = taken_++;
+        setup = setups_[i];
+        queue_.start(indices_[i], setup, ray);
+        return true;
+    }
+    uint64_t origin_bit() const { return queue_.origin_bit(); }
+
+private:
+    bool fill() {
+        count_ = taken_ = 0;
+        while (count_ < kLanes && queue_.next_index(indices_[count_])) ++count_;
+        if (count_ == 0) return false;
+        const octomap::point3d *ends[kLanes];
+        for (int i = 0; i < kLanes; ++i) ends[i] = &queue_.end_point(indices_[i < count_ ? i : count_ - 1]);
+        ray_setup_four(queue_.origin(), ends, setups_);
+        return true;
+    }
+
+    RayQueue &queue_;
+    size_t indices_[kLanes];
+    RaySetup setups_[kLanes];
+    int count_ = 0, taken_ = 0;
+};
+
 // Every lane's state, lane after lane, for loading into vectors and for
 // refilling one lane.  An idle lane never ends, never moves and marks
 // the origin's cell, which its walk has marked already.
@@ -65,14 +97,14 @@ struct alignas(32) Lanes {
     }
 
     // Fills the lane with the queue's next ray; false when none is left.
-    bool refill(int lane, RayQueue &queue) {
+    bool refill(int lane, RayBatch &rays) {
         LaneRay ray;
         RaySetup setup;
-        if (queue.next(ray, setup)) {
+        if (rays.next(ray, setup)) {
             load(lane, ray, setup);
             return true;
         }
-        idle(lane, queue.origin_bit());
+        idle(lane, rays.origin_bit());
         return false;
     }
 };
@@ -140,13 +172,14 @@ OPX_AVX2 unsigned step_until_done(Lanes &lanes, FrameMarks &marks) {
 }  // namespace
 
 OPX_AVX2 void walk_four(RayQueue &queue, FrameMarks &marks) {
+    RayBatch rays(queue);
     Lanes lanes;
     int live = 0;
-    for (int lane = 0; lane < kLanes; ++lane) live += lanes.refill(lane, queue);
+    for (int lane = 0; lane < kLanes; ++lane) live += lanes.refill(lane, rays);
     while (live > 0) {
         const unsigned done = step_until_done(lanes, marks);
         for (int lane = 0; lane < kLanes; ++lane)
-            if ((done >> lane & 1) != 0 && lanes.live[lane]) live -= !lanes.refill(lane, queue);
+            if ((done >> lane & 1) != 0 && lanes.live[lane]) live -= !lanes.refill(lane, rays);
     }
 }
 
