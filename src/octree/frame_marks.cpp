@@ -11,14 +11,6 @@ constexpr uint32_t kMaxKey = 65535;  // OctoMap's 16-bit keys
 
 }  // namespace
 
-void KeyBox::grow(const uint32_t key[3]) {
-    for (int axis = 0; axis < 3; ++axis) {
-        lo[axis] = empty ? key[axis] : std::min(lo[axis], key[axis]);
-        hi[axis] = empty ? key[axis] : std::max(hi[axis], key[axis]);
-    }
-    empty = false;
-}
-
 void KeyBox::grow(const KeyBox &other) {
     if (other.empty) return;
     grow(other.lo);

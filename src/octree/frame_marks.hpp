@@ -12,6 +12,7 @@
 // order.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -25,7 +26,13 @@ struct KeyBox {
     uint32_t hi[3] = {0, 0, 0};
     bool empty = true;
 
-    void grow(const uint32_t key[3]);
+    void grow(const uint32_t key[3]) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = empty ? key[axis] : std::min(lo[axis], key[axis]);
+            hi[axis] = empty ? key[axis] : std::max(hi[axis], key[axis]);
+        }
+        empty = false;
+    }
     void grow(const KeyBox &other);
     // Widened by `cells` on every side, kept within OctoMap's key range.
     KeyBox padded(uint32_t cells) const;

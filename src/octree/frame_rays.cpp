@@ -26,9 +26,13 @@ public:
 
     bool key(const octomap::point3d &p, octomap::OcTreeKey &out) const {
         for (int axis = 0; axis < 3; ++axis) {
-            const double scaled = std::floor(factor_ * p(axis));
+            const double scaled = factor_ * p(axis);
+            // floor(scaled) in [-kHalf, kHalf), without a library call:
+            // truncation, one down for negative non-integers.
             if (!(scaled >= -kHalf && scaled < kHalf)) return false;
-            out[axis] = static_cast<octomap::key_type>(static_cast<int>(scaled) + static_cast<int>(kHalf));
+            int cell = static_cast<int>(scaled);
+            cell -= static_cast<double>(cell) > scaled;
+            out[axis] = static_cast<octomap::key_type>(cell + static_cast<int>(kHalf));
         }
         return true;
     }

@@ -41,6 +41,9 @@ public:
         for (int i = 0; i < 3; ++i) origin_cell_[i] = origin_key[i];
         origin_inside_ = marks.holds(origin_cell_, kOriginMargin);
         origin_bit_ = origin_inside_ ? marks.bit_of(origin_cell_) : 0;
+        const int down[3] = {-1, -1, -1}, up[3] = {1, 1, 1};
+        moves_[0] = bit_moves(down, marks);
+        moves_[1] = bit_moves(up, marks);
     }
 
     // The next ray with cells to walk, false when none is left.
@@ -71,7 +74,13 @@ public:
     void start(size_t index, const RaySetup &setup, LaneRay &ray) {
         const octomap::OcTreeKey &key = end_keys_[index];
         const uint32_t end_cell[3] = {key[0], key[1], key[2]};
-        ray.moves = bit_moves(setup, marks_);
+        for (int axis = 0; axis < 3; ++axis) {  // an axis without steps is never chosen
+            const BitMoves &m = moves_[setup.step[axis] > 0];
+            ray.moves.in_brick[axis] = m.in_brick[axis];
+            ray.moves.brick_change[axis] = m.brick_change[axis];
+            ray.moves.edge_mask[axis] = m.edge_mask[axis];
+            ray.moves.edge_value[axis] = m.edge_value[axis];
+        }
         ray.bit = origin_bit_;
         ray.last_bit = marks_.bit_of(end_cell);
         marks_.mark_crossed(origin_bit_);
@@ -98,6 +107,7 @@ private:
     const octomap::OcTreeKey origin_key_;
     uint32_t origin_cell_[3];
     bool origin_inside_ = false;
+    BitMoves moves_[2];  // every axis stepping down, up
     uint64_t origin_bit_ = 0;
     const std::vector<octomap::point3d> &ends_;
     const std::vector<octomap::OcTreeKey> &end_keys_;

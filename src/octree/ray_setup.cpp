@@ -50,13 +50,13 @@ RaySetup ray_setup(const RayOrigin &origin, const octomap::point3d &end) {
     return s;
 }
 
-BitMoves bit_moves(const RaySetup &ray, const FrameMarks &marks) {
+BitMoves bit_moves(const int step[3], const FrameMarks &marks) {
     BitMoves m;
     for (int i = 0; i < 3; ++i) {
-        m.in_brick[i] = ray.step[i] * marks.unit_step(i);
-        m.brick_change[i] = ray.step[i] * (marks.brick_step(i) - 8 * marks.unit_step(i));
+        m.in_brick[i] = step[i] * marks.unit_step(i);
+        m.brick_change[i] = step[i] * (marks.brick_step(i) - 8 * marks.unit_step(i));
         m.edge_mask[i] = uint64_t{brick::kMask} << (brick::kShift * i);
-        m.edge_value[i] = ray.step[i] > 0 ? m.edge_mask[i] : 0;
+        m.edge_value[i] = step[i] > 0 ? m.edge_mask[i] : 0;
     }
     return m;
 }

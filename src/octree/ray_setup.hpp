@@ -49,6 +49,6 @@ struct BitMoves {
     uint64_t edge_value[3];   // their value where a step leaves the brick
 };
 
-BitMoves bit_moves(const RaySetup &ray, const FrameMarks &marks);
+BitMoves bit_moves(const int step[3], const FrameMarks &marks);
 
 }  // namespace octoprox

@@ -40,18 +40,6 @@ void validate_params(const OctreeParams &p, const char *argument) {
                              p.free_threshold, p.occupied_threshold));
 }
 
-Vec3 PointSource::read(size_t index) const {
-    const unsigned char *at = data + index * stride;
-    if (is_double) {
-        double xyz[3];
-        std::memcpy(xyz, at, sizeof xyz);
-        return Vec3(xyz[0], xyz[1], xyz[2]);
-    }
-    float xyz[3];
-    std::memcpy(xyz, at, sizeof xyz);
-    return Vec3(xyz[0], xyz[1], xyz[2]);
-}
-
 SensorOctree::SensorOctree(const OctreeParams &params)
     : params_(params), tree_(std::make_unique<BoundedOcTree>(params.resolution)) {
     apply_params();

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 
 namespace octoprox {
@@ -26,7 +27,17 @@ struct PointSource {
     size_t stride = 0;  // bytes, never 0 here
     bool is_double = false;
 
-    Vec3 read(size_t index) const;
+    Vec3 read(size_t index) const {
+        const unsigned char *at = data + index * stride;
+        if (is_double) {
+            double xyz[3];
+            std::memcpy(xyz, at, sizeof xyz);
+            return Vec3(xyz[0], xyz[1], xyz[2]);
+        }
+        float xyz[3];
+        std::memcpy(xyz, at, sizeof xyz);
+        return Vec3(xyz[0], xyz[1], xyz[2]);
+    }
 };
 
 struct InsertSettings {
