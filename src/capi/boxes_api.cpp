@@ -3,8 +3,6 @@
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
-#include "narrowphase/narrow_phase.hpp"
-#include "query/cell_description.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -15,18 +13,6 @@ using namespace octoprox::capi;
 namespace {
 
 constexpr size_t kBoxBytes = 6 * sizeof(double);
-
-void require_amortized(const opx_query *query) {
-    if (query->engine != OPX_ENGINE_AMORTIZED)
-        throw_invalid("query uses OPX_ENGINE_DIRECT; caller boxes need a context made with OPX_ENGINE_AMORTIZED");
-}
-
-void require_bound_boxes(const opx_query *query) {
-    require_amortized(query);
-    if (!query->amortized.holds_caller_boxes())
-        throw_invalid("query holds no caller boxes (call opx_query_bind_boxes first; an octree query since "
-                      "unbinds them)");
-}
 
 std::vector<Aabb> read_boxes(const double *boxes, size_t count, size_t stride) {
     if (stride != 0 && stride < kBoxBytes)
@@ -69,26 +55,6 @@ DistanceSettings box_distance_settings(const opx_distance_request &r) {
     return read_distance_bounds(r);
 }
 
-opx_distance_result box_distance_to_abi(const DistanceOutcome &o, const DistanceSettings &s, const opx_query &q) {
-    opx_distance_result out = OPX_DISTANCE_RESULT_INIT;
-    out.found = o.found ? 1 : 0;
-    out.narrow_tests = o.narrow_tests;
-    out.distance = o.found ? o.distance : s.cutoff;
-    if (!o.found) return out;
-    const CellSummary cell = describe_caller_box(q.amortized.caller_box(static_cast<size_t>(o.box_index)));
-    out.collided = o.distance <= kTouchTolerance ? 1 : 0;
-    out.cell_class = cell.cell_class;
-    out.link = o.link, out.shape = o.shape;
-    for (int axis = 0; axis < 3; ++axis) {
-        out.point_on_link[axis] = o.on_link[axis];
-        out.point_on_cell[axis] = o.on_cell[axis];
-        out.cell_center[axis] = cell.center[axis];
-    }
-    out.cell_size = cell.size;
-    out.cell_probability = cell.probability;
-    return out;
-}
-
 }  // namespace
 
 extern "C" {
@@ -96,8 +62,8 @@ extern "C" {
 OPX_API opx_status opx_query_bind_boxes(opx_query *query, const double *boxes, size_t count, size_t stride) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_amortized(query);
-        query->amortized.bind_boxes(read_boxes(boxes, count, stride));
+        query->context.require_box_engine();
+        query->context.bind_boxes(read_boxes(boxes, count, stride));
         return OPX_OK;
     });
 }
@@ -111,15 +77,8 @@ OPX_API opx_status opx_query_collide_boxes(opx_query *query, const opx_linkset *
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const CollisionSettings settings = box_collision_settings(merged);
-        require_bound_boxes(query);
-        const CollisionOutcome outcome = query->amortized.collide_boxes(links->links, settings, query->contacts);
-        query->cost_boxes.clear();
-        opx_collision_result result = OPX_COLLISION_RESULT_INIT;
-        result.collided = outcome.collided ? 1 : 0;
-        result.contact_count = query->contacts.size();
-        result.truncated = outcome.truncated ? 1 : 0;
-        result.narrow_tests = outcome.narrow_tests;
-        write_versioned(out_result, result, "out_result");
+        const CollisionAnswer answer = query->context.collide_boxes(links->links, settings);
+        write_versioned(out_result, collision_result_to_abi(answer, query->context), "out_result");
         return OPX_OK;
     });
 }
@@ -133,11 +92,8 @@ OPX_API opx_status opx_query_distance_boxes(opx_query *query, const opx_linkset 
         opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const DistanceSettings settings = box_distance_settings(merged);
-        require_bound_boxes(query);
-        query->link_distances.clear();
-        const DistanceOutcome outcome = query->amortized.distance_boxes(
-            links->links, settings, merged.per_link ? &query->link_distances : nullptr);
-        write_versioned(out_result, box_distance_to_abi(outcome, settings, *query), "out_result");
+        const DistanceAnswer answer = query->context.distance_boxes(links->links, settings, merged.per_link != 0);
+        write_versioned(out_result, distance_result_to_abi(answer, settings.cutoff), "out_result");
         return OPX_OK;
     });
 }

@@ -3,8 +3,6 @@
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
 #include "narrowphase/narrow_phase.hpp"
-#include "query/cell_description.hpp"
-
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -18,31 +16,32 @@ DistanceSettings read_distance_request(const opx_distance_request &r, const Sens
     return s;
 }
 
-opx_distance_result result_to_abi(const DistanceOutcome &o, const DistanceSettings &s, const SensorOctree &tree) {
+}  // namespace
+
+namespace octoprox::capi {
+
+opx_distance_result distance_result_to_abi(const DistanceAnswer &answer, double cutoff) {
+    const DistanceOutcome &o = answer.outcome;
     opx_distance_result out = OPX_DISTANCE_RESULT_INIT;
     out.found = o.found ? 1 : 0;
     out.narrow_tests = o.narrow_tests;
-    if (!o.found) {
-        out.distance = s.cutoff;
-        return out;
-    }
-    const CellSummary cell = describe_cell(tree, o.cell, o.cell_unknown, o.cell_log_odds);
+    out.distance = o.found ? o.distance : cutoff;
+    if (!o.found) return out;
     // The same touch rule as collision queries, so the two agree.
     out.collided = o.distance <= kTouchTolerance ? 1 : 0;
-    out.cell_class = cell.cell_class;
+    out.cell_class = answer.cell.cell_class;
     out.link = o.link, out.shape = o.shape;
-    out.distance = o.distance;
     for (int axis = 0; axis < 3; ++axis) {
         out.point_on_link[axis] = o.on_link[axis];
         out.point_on_cell[axis] = o.on_cell[axis];
-        out.cell_center[axis] = cell.center[axis];
+        out.cell_center[axis] = answer.cell.center[axis];
     }
-    out.cell_size = cell.size;
-    out.cell_probability = cell.probability;
+    out.cell_size = answer.cell.size;
+    out.cell_probability = answer.cell.probability;
     return out;
 }
 
-}  // namespace
+}  // namespace octoprox::capi
 
 extern "C" {
 
@@ -64,14 +63,9 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, 
         opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const DistanceSettings settings = read_distance_request(merged, *tree->tree);
-        query->link_distances.clear();
-        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED;
-        const DistanceOutcome outcome =
-            amortized ? query->amortized.distance(*tree->tree, links->links, settings,
-                                                  merged.per_link ? &query->link_distances : nullptr)
-            : merged.per_link ? query->distance.run_per_link(*tree->tree, links->links, settings, query->link_distances)
-                              : query->distance.run(*tree->tree, links->links, settings);
-        write_versioned(out_result, result_to_abi(outcome, settings, *tree->tree), "out_result");
+        const bool per_link = merged.per_link != 0;
+        const DistanceAnswer answer = query->context.distance(*tree->tree, links->links, settings, per_link);
+        write_versioned(out_result, distance_result_to_abi(answer, settings.cutoff), "out_result");
         return OPX_OK;
     });
 }
@@ -82,7 +76,7 @@ OPX_API opx_status opx_query_get_link_distances(const opx_query *query, double *
         require_pointer(query, "query");
         require_pointer(out_count, "out_count");
         if (capacity > 0) require_pointer(out_distances, "out_distances");
-        const std::vector<double> &d = query->link_distances;
+        const std::vector<double> &d = query->context.link_distances();
         *out_count = d.size();
         std::copy(d.begin(), d.begin() + std::min(capacity, d.size()), out_distances);
         if (d.size() > capacity)

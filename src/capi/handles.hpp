@@ -2,10 +2,7 @@
 #pragma once
 
 #include "octree/sensor_octree.hpp"
-#include "query/amortized/amortized_engine.hpp"
-#include "query/direct/direct_collide.hpp"
-#include "query/direct/direct_distance.hpp"
-#include "query/path_query.hpp"
+#include "query/context.hpp"
 #include "robot/linkset.hpp"
 #include "robot/robot_model.hpp"
 
@@ -25,16 +22,8 @@ struct opx_linkset {
 };
 
 struct opx_query {
-    int32_t engine = OPX_ENGINE_DIRECT;
-    octoprox::DirectCollider direct;
-    std::vector<octoprox::Contact> contacts;  // of the last collision query
-    std::vector<octoprox::CostBox> cost_boxes;
-    std::vector<octoprox::Aabb> link_boxes;   // scratch
-    double resolution = 0.0;                  // of the octree of the last query
-    octoprox::DirectDistance distance;
-    octoprox::PathQuery path;
-    octoprox::AmortizedEngine amortized;
-    std::vector<double> link_distances;       // of the last per-link distance query
+    explicit opx_query(const octoprox::ContextOptions &options) : context(options) {}
+    octoprox::QueryContext context;
 };
 
 namespace octoprox::capi {
@@ -52,5 +41,10 @@ opx_insert_report report_from_counts(const InsertCounts &counts);
 CollisionSettings collision_settings(const opx_collision_request &request, const SensorOctree &tree);
 // The public form of a cost box.
 opx_cost_box cost_box_to_abi(const CostBox &box, double resolution);
+// The public form of a collision answer, its contacts and cost boxes
+// being the context's.
+opx_collision_result collision_result_to_abi(const CollisionAnswer &answer, const QueryContext &context);
+// The public form of a distance answer (not found: the distance is the cutoff).
+opx_distance_result distance_result_to_abi(const DistanceAnswer &answer, double cutoff);
 
 }  // namespace octoprox::capi

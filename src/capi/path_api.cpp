@@ -22,6 +22,28 @@ opx_collision_request as_collision_request(const opx_path_request &r) {
     return c;
 }
 
+PathSettings path_settings(const opx_path_request &merged, const SensorOctree &tree) {
+    PathSettings settings;
+    settings.collision = collision_settings(as_collision_request(merged), tree);
+    settings.distance = merged.compute_distance != 0;
+    settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
+    settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
+    return settings;
+}
+
+opx_path_result path_result_to_abi(const PathOutcome &o, const QueryContext &context) {
+    opx_path_result result = OPX_PATH_RESULT_INIT;
+    result.collided = o.first_collision >= 0 ? 1 : 0;
+    result.first_colliding_waypoint = o.first_collision;
+    result.min_distance = o.min_distance;
+    result.min_distance_waypoint = o.min_distance_waypoint;
+    result.total_cost = o.cost.total;
+    result.cost_boxes_found = o.cost.box_count;
+    result.cost_box_count = context.cost_boxes().size();
+    result.narrow_tests = o.narrow_tests;
+    return result;
+}
+
 // Reads every waypoint's poses up front, so a bad pose fails the call
 // before any work.
 std::vector<Pose> read_path_poses(const opx_pose *poses, size_t waypoints, size_t links, size_t pose_stride,
@@ -69,32 +91,11 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, cons
         require_out_struct(out_result, "out_result");
         opx_path_request merged = OPX_PATH_REQUEST_INIT;
         read_versioned(request, merged, "request");
-        const SensorOctree &octree = *tree->tree;
-        PathSettings settings;
-        settings.collision = collision_settings(as_collision_request(merged), octree);
-        settings.distance = merged.compute_distance != 0;
-        settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
-        settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
-        const size_t link_count = links->links.link_count();
-        const std::vector<Pose> all = read_path_poses(poses, waypoint_count, link_count, pose_stride, waypoint_stride);
-        auto poses_of = [&](size_t w, std::vector<Pose> &out) {
-            out.assign(all.begin() + w * link_count, all.begin() + (w + 1) * link_count);
-        };
-        query->resolution = octree.params().resolution;
-        query->contacts.clear();
-        AmortizedEngine *amortized = query->engine == OPX_ENGINE_AMORTIZED ? &query->amortized : nullptr;
-        const PathOutcome o =
-            query->path.run(octree, links->links, waypoint_count, poses_of, settings, query->cost_boxes, amortized);
-        opx_path_result result = OPX_PATH_RESULT_INIT;
-        result.collided = o.first_collision >= 0 ? 1 : 0;
-        result.first_colliding_waypoint = o.first_collision;
-        result.min_distance = o.min_distance;
-        result.min_distance_waypoint = o.min_distance_waypoint;
-        result.total_cost = o.cost.total;
-        result.cost_boxes_found = o.cost.box_count;
-        result.cost_box_count = query->cost_boxes.size();
-        result.narrow_tests = o.narrow_tests;
-        write_versioned(out_result, result, "out_result");
+        const PathSettings settings = path_settings(merged, *tree->tree);
+        const std::vector<Pose> all =
+            read_path_poses(poses, waypoint_count, links->links.link_count(), pose_stride, waypoint_stride);
+        const PathOutcome o = query->context.path(*tree->tree, links->links, all, waypoint_count, settings);
+        write_versioned(out_result, path_result_to_abi(o, query->context), "out_result");
         return OPX_OK;
     });
 }

@@ -33,10 +33,6 @@ CollisionSettings collision_settings(const opx_collision_request &merged, const 
     return settings;
 }
 
-}  // namespace octoprox::capi
-
-namespace octoprox::capi {
-
 opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
     opx_cost_box out = OPX_COST_BOX_INIT;
     out.link = b.link;
@@ -52,9 +48,39 @@ opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
     return out;
 }
 
+opx_collision_result collision_result_to_abi(const CollisionAnswer &answer, const QueryContext &context) {
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    result.collided = answer.outcome.collided ? 1 : 0;
+    result.contact_count = context.contacts().size();
+    result.truncated = answer.outcome.truncated ? 1 : 0;
+    result.narrow_tests = answer.outcome.narrow_tests;
+    result.total_cost = answer.cost.total;
+    result.cost_boxes_found = answer.cost.box_count;
+    result.cost_box_count = context.cost_boxes().size();
+    return result;
+}
+
 }  // namespace octoprox::capi
 
 namespace {
+
+// The options checked and turned into the context's.
+ContextOptions context_options(const opx_query_options &merged) {
+    if (merged.engine != OPX_ENGINE_DIRECT && merged.engine != OPX_ENGINE_AMORTIZED)
+        throw_invalid(format("options->engine %d is neither OPX_ENGINE_DIRECT (1) nor OPX_ENGINE_AMORTIZED (2)",
+                             merged.engine));
+    if (merged.morton_bits < 1 || merged.morton_bits > 21)
+        throw_invalid(format("options->morton_bits %u is outside 1..21", merged.morton_bits));
+    ContextOptions options;
+    options.engine = merged.engine == OPX_ENGINE_AMORTIZED ? EngineKind::kAmortized : EngineKind::kDirect;
+    options.amortized.refine_steps = merged.refine_steps;
+    options.amortized.morton_bits = static_cast<int>(merged.morton_bits);
+    return options;
+}
+
+int32_t engine_to_abi(EngineKind kind) {
+    return kind == EngineKind::kAmortized ? OPX_ENGINE_AMORTIZED : OPX_ENGINE_DIRECT;
+}
 
 opx_contact contact_to_abi(const Contact &c) {
     return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
@@ -90,10 +116,10 @@ OPX_API opx_status opx_query_get_cost_box(const opx_query *query, size_t index, 
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_out_struct(out_box, "out_box");
-        if (index >= query->cost_boxes.size())
-            throw_invalid(format("index %zu is beyond the %zu cost boxes of the last query", index,
-                                 query->cost_boxes.size()));
-        write_versioned(out_box, cost_box_to_abi(query->cost_boxes[index], query->resolution), "out_box");
+        const std::vector<CostBox> &boxes = query->context.cost_boxes();
+        if (index >= boxes.size())
+            throw_invalid(format("index %zu is beyond the %zu cost boxes of the last query", index, boxes.size()));
+        write_versioned(out_box, cost_box_to_abi(boxes[index], query->context.resolution()), "out_box");
         return OPX_OK;
     });
 }
@@ -106,14 +132,12 @@ OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_st
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_out_struct(out_stats, "out_stats");
+        const EngineStats s = query->context.stats();
         opx_query_stats stats = OPX_QUERY_STATS_INIT;
-        stats.engine = query->engine;
-        if (query->engine == OPX_ENGINE_AMORTIZED) {
-            const AmortizedStats s = query->amortized.stats();
-            stats.boxes = s.boxes, stats.builds = s.builds, stats.refine_steps_done = s.refine_steps_done;
-            stats.sah_ratio = query->amortized.sah_ratio();
-            stats.extract_ms = s.extract_ms, stats.build_ms = s.build_ms;
-        }
+        stats.engine = engine_to_abi(query->context.engine_kind());
+        stats.boxes = s.boxes, stats.builds = s.builds, stats.refine_steps_done = s.refine_steps_done;
+        stats.sah_ratio = s.sah_ratio;
+        stats.extract_ms = s.extract_ms, stats.build_ms = s.build_ms;
         write_versioned(out_stats, stats, "out_stats");
         return OPX_OK;
     });
@@ -125,18 +149,7 @@ OPX_API opx_status opx_query_create(const opx_query_options *options, opx_query 
         require_pointer(out, "out");
         opx_query_options merged = OPX_QUERY_OPTIONS_INIT;
         read_versioned(options, merged, "options");
-        if (merged.engine != OPX_ENGINE_DIRECT && merged.engine != OPX_ENGINE_AMORTIZED)
-            throw_invalid(format("options->engine %d is neither OPX_ENGINE_DIRECT (1) nor OPX_ENGINE_AMORTIZED (2)",
-                                 merged.engine));
-        if (merged.morton_bits < 1 || merged.morton_bits > 21)
-            throw_invalid(format("options->morton_bits %u is outside 1..21", merged.morton_bits));
-        auto query = std::make_unique<opx_query>();
-        query->engine = merged.engine;
-        AmortizedOptions amortized;
-        amortized.refine_steps = merged.refine_steps;
-        amortized.morton_bits = static_cast<int>(merged.morton_bits);
-        query->amortized = AmortizedEngine(amortized);
-        *out = query.release();
+        *out = std::make_unique<opx_query>(context_options(merged)).release();
         return OPX_OK;
     });
 }
@@ -154,26 +167,8 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const CollisionSettings settings = collision_settings(merged, *tree->tree);
-        query->resolution = tree->tree->params().resolution;
-        const bool amortized = query->engine == OPX_ENGINE_AMORTIZED;
-        const CollisionOutcome outcome =
-            amortized ? query->amortized.collide(*tree->tree, links->links, settings, query->contacts)
-                      : query->direct.collide(*tree->tree, links->links, settings, query->contacts);
-        CostCollector &cost_pairs = amortized ? query->amortized.cost() : query->direct.cost();
-        opx_collision_result result = OPX_COLLISION_RESULT_INIT;
-        result.collided = outcome.collided ? 1 : 0;
-        result.contact_count = query->contacts.size();
-        result.truncated = outcome.truncated ? 1 : 0;
-        result.narrow_tests = outcome.narrow_tests;
-        query->cost_boxes.clear();
-        if (settings.cost) {
-            link_boxes(links->links, cost_pairs, query->link_boxes);
-            const CostSummary cost = cost_pairs.finish(query->link_boxes, settings.max_cost_boxes, query->cost_boxes);
-            result.total_cost = cost.total;
-            result.cost_boxes_found = cost.box_count;
-            result.cost_box_count = query->cost_boxes.size();
-        }
-        write_versioned(out_result, result, "out_result");
+        const CollisionAnswer answer = query->context.collide(*tree->tree, links->links, settings);
+        write_versioned(out_result, collision_result_to_abi(answer, query->context), "out_result");
         return OPX_OK;
     });
 }
@@ -182,10 +177,10 @@ OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index, o
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_out_struct(out_contact, "out_contact");
-        if (index >= query->contacts.size())
-            throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index,
-                                 query->contacts.size()));
-        write_versioned(out_contact, contact_to_abi(query->contacts[index]), "out_contact");
+        const std::vector<Contact> &contacts = query->context.contacts();
+        if (index >= contacts.size())
+            throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index, contacts.size()));
+        write_versioned(out_contact, contact_to_abi(contacts[index]), "out_contact");
         return OPX_OK;
     });
 }

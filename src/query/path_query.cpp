@@ -1,14 +1,6 @@
 #include "query/path_query.hpp"
 
-#include <algorithm>
-#include <tuple>
-
 namespace octoprox {
-namespace {
-
-auto cell_order(const CellKey &c) { return std::make_tuple(c.depth, c.key[0], c.key[1], c.key[2]); }
-
-}  // namespace
 
 // A private copy of the link set takes each waypoint's poses, so the
 // caller's set stays read-only; it is copied again only when the caller's
@@ -21,28 +13,32 @@ LinkSet &PathQuery::posable_copy(const LinkSet &links) {
     return *copy_;
 }
 
-void PathQuery::merge_cost(const std::vector<CostBox> &waypoint_boxes) {
-    merged_.insert(merged_.end(), waypoint_boxes.begin(), waypoint_boxes.end());
-}
-
-// Each cell counted once: its box is the bounding box of every box the
-// path's waypoints and links made in it (all inside the cell).
-CostSummary PathQuery::finish_cost(uint32_t keep, std::vector<CostBox> &out) {
-    std::stable_sort(merged_.begin(), merged_.end(),
-                     [](const CostBox &a, const CostBox &b) { return cell_order(a.cell) < cell_order(b.cell); });
-    out.clear();
-    for (const CostBox &box : merged_) {
-        if (!out.empty() && cell_order(out.back().cell) == cell_order(box.cell)) {
-            out.back().box.grow(box.box);
-            continue;
+PathOutcome PathQuery::run(Engine &engine, CostPipeline &cost, const SensorOctree &tree, const LinkSet &links,
+                           const std::vector<Pose> &poses, size_t waypoints, const PathSettings &settings,
+                           std::vector<CostBox> &boxes) {
+    LinkSet &moving = posable_copy(links);
+    const size_t link_count = links.link_count();
+    CollisionSettings collision = settings.collision;
+    collision.max_contacts = 0;  // yes/no per waypoint
+    cost.start_path();
+    PathOutcome out;
+    for (size_t w = 0; w < waypoints; ++w) {
+        poses_.assign(poses.begin() + w * link_count, poses.begin() + (w + 1) * link_count);
+        moving.set_poses(poses_);
+        const CollisionOutcome hit = engine.collide(tree, moving, collision, contacts_);
+        out.narrow_tests += hit.narrow_tests;
+        if (hit.collided && out.first_collision < 0) out.first_collision = static_cast<int64_t>(w);
+        if (collision.cost) cost.add_waypoint(moving, engine.cost());
+        if (settings.distance) {
+            const DistanceOutcome d = engine.distance(tree, moving, settings.distance_settings, nullptr);
+            out.narrow_tests += d.narrow_tests;
+            if (d.found && d.distance < out.min_distance)
+                out.min_distance = d.distance, out.min_distance_waypoint = static_cast<int64_t>(w);
         }
-        out.push_back(box);
+        if (out.first_collision >= 0 && !collision.cost && !settings.distance) break;
     }
-    // Cells whose merged box still has no volume give no box.
-    out.erase(std::remove_if(out.begin(), out.end(),
-                             [](const CostBox &b) { return !b.box.has_volume(); }),
-              out.end());
-    return keep_costliest(out, keep);
+    out.cost = cost.finish_path(collision.max_cost_boxes, boxes);
+    return out;
 }
 
 }  // namespace octoprox

@@ -1,7 +1,7 @@
 // The amortized engine answers every query itself, as the direct engine
 // does: called directly (no C shim, no fallback possible) on a ray-cast map
-// with occupied, uncertain, free and unknown cells, against DirectCollider
-// and DirectDistance: cost (totals, every box), OPX_UNKNOWN_OCCUPIED
+// with occupied, uncertain, free and unknown cells, against the
+// DirectEngine: cost (totals, every box), OPX_UNKNOWN_OCCUPIED
 // contacts and distances, penetration per contact and signed distances.
 // The unknown cubes tile the map cube with the leaves; the cost and unknown
 // trees are built once per frame, on first need only.
@@ -9,8 +9,7 @@
 #include "octree/octree_cell.hpp"
 #include "octree/traverse.hpp"
 #include "query/amortized/amortized_engine.hpp"
-#include "query/direct/direct_collide.hpp"
-#include "query/direct/direct_distance.hpp"
+#include "query/direct/direct_engine.hpp"
 
 #include <gtest/gtest.h>
 
@@ -124,8 +123,7 @@ protected:
     LinkSet links = make_robot();
     std::mt19937_64 rng{11};
     AmortizedEngine amortized;
-    DirectCollider direct;
-    DirectDistance direct_distance;
+    DirectEngine direct;
     std::vector<Contact> a_contacts, d_contacts;
 
     // Both engines on one collision query: the same answer, the same
@@ -219,7 +217,7 @@ TEST_F(AmortizedParity, UnknownOccupiedEqualsTheDirectEngines) {
         ASSERT_NO_FATAL_FAILURE(expect_same_contacts(s, trial));
         for (const Contact &c : a_contacts) unknown_contacts += c.cell_class == kUnknown ? 1 : 0;
         const DistanceOutcome ad = amortized.distance(*tree, links, ds, &a_links);
-        const DistanceOutcome dd = direct_distance.run_per_link(*tree, links, ds, d_links);
+        const DistanceOutcome dd = direct.distance(*tree, links, ds, &d_links);
         ASSERT_EQ(ad.found, dd.found);
         ASSERT_NEAR(ad.distance, dd.distance, 1e-12) << trial;
         ASSERT_EQ(a_links, d_links) << trial;
@@ -237,7 +235,7 @@ TEST_F(AmortizedParity, PenetrationAndSignedDistanceEqualTheDirectEngines) {
             random_poses(links, rng);
             ASSERT_NO_FATAL_FAILURE(expect_same_contacts(s, trial));
             const DistanceOutcome ad = amortized.distance(*tree, links, ds, nullptr);
-            const DistanceOutcome dd = direct_distance.run(*tree, links, ds);
+            const DistanceOutcome dd = direct.distance(*tree, links, ds, nullptr);
             ASSERT_EQ(ad.found, dd.found);
             ASSERT_NEAR(ad.distance, dd.distance, 1e-12) << trial;  // ties may differ in the last bit
             ASSERT_EQ(ad.cell_unknown, dd.cell_unknown) << trial;

@@ -83,9 +83,14 @@ double AmortizedEngine::build_tree(Band &band) {
     return ms_since(start);
 }
 
-AmortizedStats AmortizedEngine::stats() const {
-    return AmortizedStats{obstacles_.cells.boxes.size(), builds_, obstacles_.tree.refine_steps_done(), extract_ms_,
-                          build_ms_};
+EngineStats AmortizedEngine::stats() {
+    EngineStats stats;
+    stats.boxes = obstacles_.cells.boxes.size();
+    stats.builds = builds_;
+    stats.refine_steps_done = obstacles_.tree.refine_steps_done();
+    stats.sah_ratio = obstacles_.tree.empty() ? 1.0 : obstacles_.tree.sah_ratio();
+    stats.extract_ms = extract_ms_, stats.build_ms = build_ms_;
+    return stats;
 }
 
 // Over the uncertain cells and, unless unknown space is an obstacle

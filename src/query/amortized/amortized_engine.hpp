@@ -16,11 +16,7 @@
 
 #include "broadphase/box_tree.hpp"
 #include "octree/cell_boxes.hpp"
-#include "octree/sensor_octree.hpp"
-#include "query/collision_types.hpp"
-#include "query/cost_collector.hpp"
-#include "query/distance_types.hpp"
-#include "robot/linkset.hpp"
+#include "query/engine.hpp"
 
 #include <vector>
 
@@ -33,27 +29,20 @@ struct AmortizedOptions {
     int morton_bits = 10;       // lattice bits per axis
 };
 
-struct AmortizedStats {
-    uint64_t boxes = 0;              // obstacle boxes (cells at or above the threshold, or caller boxes)
-    uint64_t builds = 0;             // trees built: obstacle, uncertain and unknown
-    uint64_t refine_steps_done = 0;  // on the obstacle tree
-    double extract_ms = 0.0;  // last obstacle bind: cells to boxes (T_{1,1})
-    double build_ms = 0.0;    // last obstacle bind: boxes to tree (~T_{1,2})
-};
-
-class AmortizedEngine {
+class AmortizedEngine final : public Engine {
 public:
     explicit AmortizedEngine(const AmortizedOptions &options = AmortizedOptions()) : options_(options) {}
 
     // Builds the obstacle tree unless it already holds this frame at this threshold.
     void bind(const SensorOctree &tree, float threshold_log_odds);
-    // With settings.cost, the (link, cell) cost pairs go to cost().
+    // Engine's queries (engine.hpp), over the trees bound to the frame.
     CollisionOutcome collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings,
-                             std::vector<Contact> &contacts);
+                             std::vector<Contact> &contacts) override;
     DistanceOutcome distance(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings,
-                             std::vector<double> *per_link);
-    // The cost pairs of the last collision query with settings.cost.
-    CostCollector &cost() { return cost_; }
+                             std::vector<double> *per_link) override;
+    CostCollector &cost() override { return cost_; }
+    // sah_ratio computes the median split's cost once per build (a diagnostic).
+    EngineStats stats() override;
 
     // The caller's boxes instead of an octree frame, until the next bind.
     void bind_boxes(std::vector<Aabb> boxes);
@@ -67,8 +56,6 @@ public:
     DistanceOutcome distance_boxes(const LinkSet &links, const DistanceSettings &settings,
                                    std::vector<double> *per_link);
 
-    AmortizedStats stats() const;
-    double sah_ratio() { return obstacles_.tree.empty() ? 1.0 : obstacles_.tree.sah_ratio(); }
 
 private:
     // What a band's boxes were read from: rebuilt only when it changes.

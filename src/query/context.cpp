@@ -1,0 +1,81 @@
+#include "query/context.hpp"
+
+#include "base/error.hpp"
+#include "query/direct/direct_engine.hpp"
+
+namespace octoprox {
+
+// The one place an engine is chosen.
+QueryContext::QueryContext(const ContextOptions &options) : kind_(options.engine) {
+    if (kind_ == EngineKind::kAmortized) {
+        auto amortized = std::make_unique<AmortizedEngine>(options.amortized);
+        amortized_ = amortized.get();
+        engine_ = std::move(amortized);
+    } else {
+        engine_ = std::make_unique<DirectEngine>();
+    }
+}
+
+CollisionAnswer QueryContext::collide(const SensorOctree &tree, const LinkSet &links,
+                                      const CollisionSettings &settings) {
+    resolution_ = tree.params().resolution;
+    CollisionAnswer answer;
+    answer.outcome = engine_->collide(tree, links, settings, contacts_);
+    cost_boxes_.clear();
+    if (settings.cost) answer.cost = cost_.finish(links, engine_->cost(), settings.max_cost_boxes, cost_boxes_);
+    return answer;
+}
+
+DistanceAnswer QueryContext::distance(const SensorOctree &tree, const LinkSet &links,
+                                      const DistanceSettings &settings, bool per_link) {
+    link_distances_.clear();
+    DistanceAnswer answer;
+    answer.outcome = engine_->distance(tree, links, settings, per_link ? &link_distances_ : nullptr);
+    const DistanceOutcome &o = answer.outcome;
+    if (o.found) answer.cell = describe_cell(tree, o.cell, o.cell_unknown, o.cell_log_odds);
+    return answer;
+}
+
+PathOutcome QueryContext::path(const SensorOctree &tree, const LinkSet &links, const std::vector<Pose> &poses,
+                               size_t waypoints, const PathSettings &settings) {
+    resolution_ = tree.params().resolution;
+    contacts_.clear();
+    return path_.run(*engine_, cost_, tree, links, poses, waypoints, settings, cost_boxes_);
+}
+
+AmortizedEngine &QueryContext::amortized_engine() {
+    if (amortized_ == nullptr)
+        throw_invalid("query uses OPX_ENGINE_DIRECT; caller boxes need a context made with OPX_ENGINE_AMORTIZED");
+    return *amortized_;
+}
+
+AmortizedEngine &QueryContext::bound_boxes() {
+    AmortizedEngine &engine = amortized_engine();
+    if (!engine.holds_caller_boxes())
+        throw_invalid("query holds no caller boxes (call opx_query_bind_boxes first; an octree query since "
+                      "unbinds them)");
+    return engine;
+}
+
+void QueryContext::bind_boxes(std::vector<Aabb> boxes) { amortized_engine().bind_boxes(std::move(boxes)); }
+
+CollisionAnswer QueryContext::collide_boxes(const LinkSet &links, const CollisionSettings &settings) {
+    AmortizedEngine &engine = bound_boxes();
+    CollisionAnswer answer;
+    answer.outcome = engine.collide_boxes(links, settings, contacts_);
+    cost_boxes_.clear();
+    return answer;
+}
+
+DistanceAnswer QueryContext::distance_boxes(const LinkSet &links, const DistanceSettings &settings,
+                                            bool per_link) {
+    AmortizedEngine &engine = bound_boxes();
+    link_distances_.clear();
+    DistanceAnswer answer;
+    answer.outcome = engine.distance_boxes(links, settings, per_link ? &link_distances_ : nullptr);
+    const DistanceOutcome &o = answer.outcome;
+    if (o.found) answer.cell = describe_caller_box(engine.caller_box(static_cast<size_t>(o.box_index)));
+    return answer;
+}
+
+}  // namespace octoprox

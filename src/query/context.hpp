@@ -1,0 +1,83 @@
+// The query context below the C ABI (an opx_query holds one): the engine
+// chosen when it is made, the results of its last queries (contacts, cost
+// boxes, per-link distances) and the cost pipeline.  Every query kind goes
+// through it with the same engine verbs (engine.hpp), so a new kind is one
+// more method here over the same engine.  One context per thread.
+#pragma once
+
+#include "query/amortized/amortized_engine.hpp"
+#include "query/cell_description.hpp"
+#include "query/cost_pipeline.hpp"
+#include "query/path_query.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace octoprox {
+
+enum class EngineKind { kDirect, kAmortized };
+
+struct ContextOptions {
+    EngineKind engine = EngineKind::kDirect;
+    AmortizedOptions amortized;  // used by the amortized engine only
+};
+
+// A collision query's answer; its contacts and cost boxes stay in the context.
+struct CollisionAnswer {
+    CollisionOutcome outcome;
+    CostSummary cost;  // with settings.cost
+};
+
+// A distance query's answer and what the nearest cell (or caller box) is;
+// with per_link, every link's minimum stays in the context.
+struct DistanceAnswer {
+    DistanceOutcome outcome;
+    CellSummary cell;  // when outcome.found
+};
+
+class QueryContext {
+public:
+    explicit QueryContext(const ContextOptions &options);
+
+    EngineKind engine_kind() const { return kind_; }
+    EngineStats stats() { return engine_->stats(); }
+
+    // Queries against an octree frame.
+    CollisionAnswer collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings);
+    DistanceAnswer distance(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings,
+                            bool per_link);
+    // `poses`: waypoint-major, one pose per link (path_query.hpp).
+    PathOutcome path(const SensorOctree &tree, const LinkSet &links, const std::vector<Pose> &poses,
+                     size_t waypoints, const PathSettings &settings);
+
+    // A caller's boxes as the map (amortized engine only; an octree query
+    // unbinds them).  These throw ApiError (invalid argument) otherwise;
+    // require_box_engine checks the engine alone, before boxes are read.
+    void require_box_engine() { amortized_engine(); }
+    void bind_boxes(std::vector<Aabb> boxes);
+    CollisionAnswer collide_boxes(const LinkSet &links, const CollisionSettings &settings);
+    DistanceAnswer distance_boxes(const LinkSet &links, const DistanceSettings &settings, bool per_link);
+
+    // The results of the last queries.
+    const std::vector<Contact> &contacts() const { return contacts_; }
+    const std::vector<CostBox> &cost_boxes() const { return cost_boxes_; }
+    const std::vector<double> &link_distances() const { return link_distances_; }
+    // Of the octree of the last collision or path query (the cost boxes' cells).
+    double resolution() const { return resolution_; }
+
+private:
+    AmortizedEngine &amortized_engine();
+    AmortizedEngine &bound_boxes();
+
+    EngineKind kind_;
+    std::unique_ptr<Engine> engine_;
+    AmortizedEngine *amortized_ = nullptr;  // engine_, when it is the amortized engine
+    CostPipeline cost_;
+    PathQuery path_;
+    std::vector<Contact> contacts_;
+    std::vector<CostBox> cost_boxes_;
+    std::vector<double> link_distances_;
+    double resolution_ = 0.0;
+};
+
+}  // namespace octoprox
