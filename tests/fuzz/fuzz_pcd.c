@@ -1,5 +1,5 @@
 /*
- * Fuzz target: PCD files (tools/clouds pcd_read_file), the input being the
+ * Fuzz target: PCD files (src/clouds pcd_read_file), the input being the
  * file.  A cloud that is read must hold width * height points, all of them
  * readable, and count its finite ones right; a failure must leave the cloud
  * empty with a message.

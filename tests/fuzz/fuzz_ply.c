@@ -1,5 +1,5 @@
 /*
- * Fuzz target: PLY files (tools/clouds ply_read_file), the input being the
+ * Fuzz target: PLY files (src/clouds ply_read_file), the input being the
  * file.  A cloud that is read must have all its vertices readable and count
  * its finite ones right; a failure must leave the cloud empty with a
  * message.
