@@ -1,7 +1,5 @@
 #include "octree/update_reserve.hpp"
 
-#include "broadphase/morton.hpp"
-
 #include <algorithm>
 #include <vector>
 
@@ -10,22 +8,6 @@ namespace {
 
 constexpr unsigned kDepth = 16;  // OctoMap's tree depth: leaves at depth 16
 
-// The depth of the first node on the key's path that needs a block: one
-// that has no children (a leaf above the finest depth, or a pruned node),
-// or the missing child of a node that has a block.  Every node below it
-// on the path needs one too.  kDepth when the path exists to the leaf.
-unsigned first_depth_needing_block(const BoundedOcTree &tree, const octomap::OcTreeKey &key) {
-    const BoundedNode *node = tree.getRoot();
-    if (node == nullptr) return 0;  // the root is made outside the pool
-    for (unsigned depth = 0; depth < kDepth; ++depth) {
-        if (!tree.nodeHasChildren(node)) return depth;
-        const unsigned child = octomap::computeChildIdx(key, static_cast<int>(kDepth - 1 - depth));
-        if (!tree.nodeChildExists(node, child)) return depth + 1;
-        node = tree.getNodeChild(node, child);
-    }
-    return kDepth;
-}
-
 // Levels, from the root down, that two distinct Morton codes of leaf keys
 // share: nodes at depths up to this one lie on both paths.
 unsigned shared_depth(uint64_t a, uint64_t b) {
@@ -33,22 +15,52 @@ unsigned shared_depth(uint64_t a, uint64_t b) {
     return kDepth - 1 - highest_differing_bit / 3;
 }
 
+// The nodes on the path of the last cell looked at, from the root down,
+// and how deep that path exists: the next cell, sharing the first levels
+// in Morton order, walks on from where the paths part.
+class PathWalk {
+public:
+    explicit PathWalk(const BoundedOcTree &tree) : tree_(tree) { nodes_[0] = tree.getRoot(); }
+
+    // The depth of the first node on the cell's path that needs a block:
+    // one that has no children (a leaf above the finest depth, or a pruned
+    // node), or the missing child of a node that has a block.  Every node
+    // below it on the path needs one too.  kDepth when the path exists to
+    // the leaf.  `shared`: the depths the cell shares with the previous
+    // one (-1 for the first cell).
+    unsigned first_depth_needing_block(uint64_t code, int shared) {
+        if (nodes_[0] == nullptr) return 0;  // the root is made outside the pool
+        // The previous path ended within the shared part: so does this one.
+        if (static_cast<int>(ended_at_) <= shared) return ended_at_;
+        for (unsigned depth = static_cast<unsigned>(std::max(shared, 0)); depth < kDepth; ++depth) {
+            const BoundedNode *node = nodes_[depth];
+            if (!tree_.nodeHasChildren(node)) return ended_at_ = depth;
+            const unsigned child = static_cast<unsigned>(code >> (3 * (kDepth - 1 - depth))) & 7;
+            if (!tree_.nodeChildExists(node, child)) return ended_at_ = depth + 1;
+            nodes_[depth + 1] = tree_.getNodeChild(node, child);
+        }
+        return ended_at_ = kDepth;
+    }
+
+private:
+    const BoundedOcTree &tree_;
+    const BoundedNode *nodes_[kDepth + 1] = {};
+    unsigned ended_at_ = kDepth + 1;  // no path walked yet
+};
+
 }  // namespace
 
 size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &frame) {
     // In Morton order the keys through any one node are consecutive, so a
     // node is shared with the previous key or with none before it.
     const std::vector<uint64_t> &cells = frame.cells;
+    PathWalk walk(tree);
     size_t blocks = 0;
     for (size_t i = 0; i < cells.size(); ++i) {
         const uint64_t code = FrameCells::code(cells[i]);
-        uint32_t x, y, z;
-        morton_decode(code, x, y, z);
-        const octomap::OcTreeKey key(static_cast<octomap::key_type>(x), static_cast<octomap::key_type>(y),
-                                     static_cast<octomap::key_type>(z));
-        const unsigned needs_from = first_depth_needing_block(tree, key);
-        const unsigned new_from =
-            i == 0 ? needs_from : std::max(needs_from, shared_depth(FrameCells::code(cells[i - 1]), code) + 1);
+        const int shared = i == 0 ? -1 : static_cast<int>(shared_depth(FrameCells::code(cells[i - 1]), code));
+        const unsigned needs_from = walk.first_depth_needing_block(code, shared);
+        const unsigned new_from = std::max(needs_from, static_cast<unsigned>(shared + 1));
         if (new_from < kDepth) blocks += kDepth - new_from;
     }
     return blocks;
