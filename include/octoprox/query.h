@@ -62,7 +62,8 @@ typedef struct opx_query_stats {
     uint64_t builds;
     uint64_t refine_steps_done; /* on the obstacle tree, since its last build */
     /* Surface-area cost of the tree over that of a top-down median-split
-     * tree on the same boxes (computed on demand: O(n log n)); 1 when empty. */
+     * tree on the same boxes (that tree's cost is computed on the first
+     * request after a build: O(n log n)); 1 when empty. */
     double sah_ratio;           /* of the obstacle tree */
     double extract_ms;          /* last bind: obstacle cells to boxes (paper T_{1,1}) */
     double build_ms;            /* last bind: boxes to the obstacle tree (paper ~T_{1,2}) */
@@ -70,7 +71,7 @@ typedef struct opx_query_stats {
 
 #define OPX_QUERY_STATS_INIT {sizeof(opx_query_stats), 0, 0, 0, 0, 0.0, 0.0, 0.0}
 OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size);
-OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats);
+OPX_API opx_status opx_query_get_stats(const opx_query *query, opx_query_stats *out_stats);
 
 /* What unknown (never observed) space is during a query.  Only the map
  * cube (+-32768 x resolution on each axis) is searched: space outside it

@@ -30,7 +30,7 @@ void BoxTree::clear() {
     nodes_.clear();
     root_ = -1;
     path_counter_ = 0;
-    reference_valid_ = false;
+    reference_.reset();
 }
 
 // A build that throws (out of memory) leaves an empty tree, never nodes
@@ -49,7 +49,7 @@ void BoxTree::build_nodes(const Aabb *boxes, size_t count, const BoxTreeOptions 
     if (count > (size_t{1} << 30)) throw std::length_error("BoxTree: too many boxes");
     root_ = -1;
     path_counter_ = 0;
-    reference_valid_ = false;
+    reference_.reset();
     max_depth_ = std::clamp(options.max_depth, 1, kMaxDepth);
     // Every node is written below: resize() without clear() keeps the old
     // nodes instead of value-initialising 2n of them first.
@@ -256,27 +256,28 @@ SahCost BoxTree::sah() const {
     return cost;
 }
 
-SahCost BoxTree::reference_sah() {
-    if (reference_valid_) return reference_;
-    reference_ = SahCost();
-    if (!nodes_.empty()) {
-        std::vector<Aabb> boxes(item_count());
-        for (const BoxTreeNode &n : nodes_)
-            if (n.is_leaf()) boxes[n.item] = n.box;
-        AabbTree median;
-        median.build(boxes);
-        for (size_t i = 0; i < median.size(); ++i) {
-            const AabbTreeNode &n = median.node(static_cast<int32_t>(i));
-            (n.is_leaf() ? reference_.leaves : reference_.inner) += n.box.surface_area();
-        }
-        const double root_area = median.node(median.root()).box.surface_area();
-        if (root_area > 0.0) {
-            reference_.inner /= root_area;
-            reference_.leaves /= root_area;
-        }
+SahCost BoxTree::reference_sah() const {
+    return reference_.get([this] { return median_split_sah(); });
+}
+
+SahCost BoxTree::median_split_sah() const {
+    SahCost cost;
+    if (nodes_.empty()) return cost;
+    std::vector<Aabb> boxes(item_count());
+    for (const BoxTreeNode &n : nodes_)
+        if (n.is_leaf()) boxes[n.item] = n.box;
+    AabbTree median;
+    median.build(boxes);
+    for (size_t i = 0; i < median.size(); ++i) {
+        const AabbTreeNode &n = median.node(static_cast<int32_t>(i));
+        (n.is_leaf() ? cost.leaves : cost.inner) += n.box.surface_area();
     }
-    reference_valid_ = true;
-    return reference_;
+    const double root_area = median.node(median.root()).box.surface_area();
+    if (root_area > 0.0) {
+        cost.inner /= root_area;
+        cost.leaves /= root_area;
+    }
+    return cost;
 }
 
 }  // namespace octoprox

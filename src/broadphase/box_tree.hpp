@@ -22,6 +22,7 @@
 // scene the Morton tree starts at 0.94x and converges to 0.90x.
 #pragma once
 
+#include "base/lazy_value.hpp"
 #include "broadphase/radix_sort.hpp"
 #include "geometry/aabb.hpp"
 
@@ -86,10 +87,12 @@ public:
     double sah_cost() const { return sah().total(); }
     // The same cost of the median-split AabbTree over the same boxes,
     // computed on first use after each build (O(n log n), allocates: a
-    // diagnostic, not for the query path).
-    SahCost reference_sah();
+    // diagnostic, not for the query path; computing it in build() would
+    // make the build ~12x slower).  Concurrent calls are safe: the first
+    // computes, the others wait for it.
+    SahCost reference_sah() const;
     // sah_cost() / reference total: 1 means as good as the median split.
-    double sah_ratio() { return sah_cost() / reference_sah().total(); }
+    double sah_ratio() const { return sah_cost() / reference_sah().total(); }
 
     bool empty() const { return nodes_.empty(); }
     size_t item_count() const { return nodes_.empty() ? 0 : (nodes_.size() + 1) / 2; }
@@ -126,6 +129,7 @@ public:
 
 private:
     void build_nodes(const Aabb *boxes, size_t count, const BoxTreeOptions &options);
+    SahCost median_split_sah() const;
     void compute_codes(const Aabb *boxes, size_t count, int morton_bits);
     void make_leaves(const Aabb *boxes);
     void link_radix_tree();
@@ -138,8 +142,7 @@ private:
     int32_t root_ = -1;
     uint64_t path_counter_ = 0;
     int max_depth_ = kMaxDepth;
-    bool reference_valid_ = false;
-    SahCost reference_;
+    LazyValue<SahCost> reference_;
     // Build buffers, kept so that rebuilds allocate nothing.
     std::vector<uint64_t> codes_;
     std::vector<uint32_t> order_;

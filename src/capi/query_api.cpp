@@ -128,7 +128,7 @@ OPX_API opx_status opx_query_stats_init(opx_query_stats *stats, size_t size) {
     return init_struct(__func__, stats, size, opx_query_stats(OPX_QUERY_STATS_INIT), "stats");
 }
 
-OPX_API opx_status opx_query_get_stats(opx_query *query, opx_query_stats *out_stats) {
+OPX_API opx_status opx_query_get_stats(const opx_query *query, opx_query_stats *out_stats) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_out_struct(out_stats, "out_stats");

@@ -40,7 +40,7 @@ public:
     explicit QueryContext(const ContextOptions &options);
 
     EngineKind engine_kind() const { return kind_; }
-    EngineStats stats() { return engine_->stats(); }
+    EngineStats stats() const { return engine_->stats(); }
 
     // Queries against an octree frame.
     CollisionAnswer collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings);

@@ -41,7 +41,8 @@ public:
                                      const DistanceSettings &settings, std::vector<double> *per_link) = 0;
     // The cost pairs of the last collision query with settings.cost.
     virtual CostCollector &cost() = 0;
-    virtual EngineStats stats() = 0;
+    // May run concurrently with itself on one engine (no query running).
+    virtual EngineStats stats() const = 0;
 };
 
 }  // namespace octoprox

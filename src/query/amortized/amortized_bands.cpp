@@ -83,7 +83,7 @@ double AmortizedEngine::build_tree(Band &band) {
     return ms_since(start);
 }
 
-EngineStats AmortizedEngine::stats() {
+EngineStats AmortizedEngine::stats() const {
     EngineStats stats;
     stats.boxes = obstacles_.cells.boxes.size();
     stats.builds = builds_;

@@ -42,7 +42,7 @@ public:
                              std::vector<double> *per_link) override;
     CostCollector &cost() override { return cost_; }
     // sah_ratio computes the median split's cost once per build (a diagnostic).
-    EngineStats stats() override;
+    EngineStats stats() const override;
 
     // The caller's boxes instead of an octree frame, until the next bind.
     void bind_boxes(std::vector<Aabb> boxes);

@@ -21,7 +21,7 @@ public:
                         : distance_.run(tree, links, settings);
     }
     CostCollector &cost() override { return collider_.cost(); }
-    EngineStats stats() override { return EngineStats(); }
+    EngineStats stats() const override { return EngineStats(); }
 
 private:
     DirectCollider collider_;

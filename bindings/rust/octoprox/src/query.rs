@@ -39,9 +39,10 @@ impl Query {
     }
 
     /// What the context holds (amortized engine).
-    pub fn stats(&mut self) -> Result<QueryStats> {
+    pub fn stats(&self) -> Result<QueryStats> {
         let mut out = QueryStats::default();
-        // SAFETY: exclusive access (the SAH ratio is computed on demand).
+        // SAFETY: const call (the SAH reference it computes on demand is
+        // guarded inside the library).
         check(unsafe { sys::opx_query_get_stats(self.raw, &mut out) })?;
         Ok(out)
     }
