@@ -7,5 +7,6 @@
 #include "linkset.h"
 #include "robot.h"
 #include "query.h"
+#include "io.h"
 
 #endif /* OCTOPROX_OCTOPROX_H */

@@ -106,14 +106,11 @@ int cloud_read_path(const char *path, cloud_format_reader read, void *out, char 
     int status;
     FILE *file = fopen(path, "rb");
     if (file == NULL) {
-        cloud_set_error(error, error_size, "%s: cannot open for reading", path);
-        return -1;
+        cloud_set_error(error, error_size, "%s: cannot open for reading: %s", path, strerror(errno));
+        return CLOUD_ERROR_IO;
     }
     status = read(file, out, reason, sizeof reason);
     fclose(file);
-    if (status != 0) {
-        cloud_set_error(error, error_size, "%s: %s", path, reason);
-        return -1;
-    }
-    return 0;
+    if (status != 0) cloud_set_error(error, error_size, "%s: %s", path, reason);
+    return status;
 }

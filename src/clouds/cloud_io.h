@@ -7,6 +7,8 @@
 #ifndef OPX_CLOUDS_CLOUD_IO_H
 #define OPX_CLOUDS_CLOUD_IO_H
 
+#include "cloud_status.h"
+
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -52,11 +54,12 @@ size_t cloud_first_capacity(size_t total, int size_known);
 /* Points of `count` packed x y z whose three coordinates are finite. */
 size_t cloud_count_finite(const float *xyz, size_t count);
 
-/* Reads an open file into `out`; 0, or -1 with the reason. */
+/* Reads an open file into `out`; 0, or a CLOUD_ERROR_* with the reason. */
 typedef int (*cloud_format_reader)(FILE *file, void *out, char *reason, size_t reason_size);
 
 /* Opens `path`, runs `read` on it, closes it; on failure the message
- * names the file ("PATH: reason").  0 on success, -1 on failure. */
+ * names the file ("PATH: reason").  0 on success, else the CLOUD_ERROR_*
+ * of the failure (CLOUD_ERROR_IO when the file cannot be opened). */
 int cloud_read_path(const char *path, cloud_format_reader read, void *out, char *error, size_t error_size);
 
 #endif /* OPX_CLOUDS_CLOUD_IO_H */

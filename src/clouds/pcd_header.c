@@ -3,6 +3,7 @@
 
 #include "cloud_io.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -103,11 +104,12 @@ static int parse_viewpoint(pcd_header *h, char *words[], char *error, size_t err
     for (i = 0; i < 7; ++i) {
         char *end = NULL;
         h->viewpoint[i] = strtod(words[i + 1], &end);
-        if (end == words[i + 1] || *end != '\0') {
-            cloud_set_error(error, error_size, "VIEWPOINT entry \"%s\" is not a number", words[i + 1]);
+        if (end == words[i + 1] || *end != '\0' || !isfinite(h->viewpoint[i])) {
+            cloud_set_error(error, error_size, "VIEWPOINT entry \"%s\" is not a finite number", words[i + 1]);
             return -1;
         }
     }
+    h->have_viewpoint = 1;
     return 0;
 }
 
@@ -161,6 +163,7 @@ int pcd_read_header(FILE *file, pcd_header *h, char *error, size_t error_size) {
     char line[PCD_LINE_MAX];
     memset(h, 0, sizeof *h);
     h->height = 1;
+    h->viewpoint[3] = 1.0; /* PCL's default VIEWPOINT: 0 0 0 1 0 0 0 */
     while (h->data[0] == '\0') {
         const int status = cloud_read_line(file, line, sizeof line);
         if (status == -2) {
@@ -195,19 +198,19 @@ static int check_axes(const pcd_header *h, char *error, size_t error_size) {
             cloud_set_error(error, error_size, "field \"%s\" is TYPE %c SIZE %d COUNT %d; only float32 "
                             "or float64 (F 4 1, F 8 1) is supported", kAxes[axis], h->types[f], h->sizes[f],
                             h->counts[f]);
-            return -1;
+            return CLOUD_ERROR_UNSUPPORTED;
         }
     }
     return 0;
 }
 
 int pcd_compute_layout(const pcd_header *h, pcd_layout *layout, char *error, size_t error_size) {
-    int axis, i;
+    int axis, i, status;
     if (h->field_count == 0 || !h->have_sizes || !h->have_types || !h->have_counts) {
         cloud_set_error(error, error_size, "FIELDS, SIZE, TYPE and COUNT must all be given, one entry per field");
         return -1;
     }
-    if (check_axes(h, error, error_size) != 0) return -1;
+    if ((status = check_axes(h, error, error_size)) != 0) return status;
     memset(layout, 0, sizeof *layout);
     for (i = 0; i < h->field_count; ++i) {
         const int size = h->sizes[i];
@@ -246,7 +249,7 @@ int pcd_point_count(const pcd_header *h, size_t *count, char *error, size_t erro
     if (points > CLOUD_MAX_POINTS) {
         cloud_set_error(error, error_size, "WIDTH * HEIGHT = %llu points are more than this machine can hold",
                         (unsigned long long)points);
-        return -1;
+        return CLOUD_ERROR_NO_MEMORY;
     }
     *count = (size_t)points;
     return 0;

@@ -21,7 +21,8 @@ typedef struct pcd_header {
     int counts[PCD_MAX_FIELDS];
     int have_sizes, have_types, have_counts, have_points;
     uint64_t width, height, points; /* WIDTH and HEIGHT fit in 32 bits */
-    double viewpoint[7];
+    double viewpoint[7];  /* tx ty tz qw qx qy qz; 0 0 0 1 0 0 0 without a VIEWPOINT line */
+    int have_viewpoint;
     char data[24];
 } pcd_header;
 
@@ -34,16 +35,16 @@ typedef struct pcd_layout {
     size_t value_index[3];
 } pcd_layout;
 
-/* Reads the header lines up to and including DATA; 0, or -1 with a
- * message. */
+/* Reads the header lines up to and including DATA; 0, or a
+ * CLOUD_ERROR_* with a message. */
 int pcd_read_header(FILE *file, pcd_header *h, char *error, size_t error_size);
 
-/* Checks FIELDS, SIZE, TYPE and COUNT and computes the layout; 0, or -1
- * with a message. */
+/* Checks FIELDS, SIZE, TYPE and COUNT and computes the layout; 0, or a
+ * CLOUD_ERROR_* with a message. */
 int pcd_compute_layout(const pcd_header *h, pcd_layout *layout, char *error, size_t error_size);
 
 /* WIDTH * HEIGHT, checked against POINTS and CLOUD_MAX_POINTS; 0 and
- * *count set, or -1 with a message. */
+ * *count set, or a CLOUD_ERROR_* with a message. */
 int pcd_point_count(const pcd_header *h, size_t *count, char *error, size_t error_size);
 
 #endif /* OPX_CLOUDS_PCD_HEADER_H */

@@ -2,6 +2,7 @@
 #include "pcd_reader.h"
 
 #include "cloud_io.h"
+#include "pcd_compressed.h"
 #include "pcd_header.h"
 
 #include <stdio.h>
@@ -28,14 +29,14 @@ static int check_room(FILE *file, const pcd_layout *layout, int binary, size_t c
         cloud_set_error(error, error_size, "%s data truncated: the header announces %zu points, the %llu bytes "
                         "after it hold at most %llu", binary ? "binary" : "ascii", count,
                         (unsigned long long)left, (unsigned long long)most);
-        return -1;
+        return CLOUD_ERROR_CORRUPT;
     }
     return 0;
 }
 
 static int out_of_memory(size_t count, char *error, size_t error_size) {
     cloud_set_error(error, error_size, "out of memory for %zu points", count);
-    return -1;
+    return CLOUD_ERROR_NO_MEMORY;
 }
 
 static void decode_binary_point(const unsigned char *record, const pcd_layout *layout, float *xyz) {
@@ -61,7 +62,7 @@ static int read_binary_points(FILE *file, const pcd_layout *layout, pcd_cloud *c
     for (i = 0; i < cloud->count && status == 0; ++i) {
         if (fread(record, 1, layout->point_bytes, file) != layout->point_bytes) {
             cloud_set_error(error, error_size, "binary data truncated at point %zu of %zu", i, cloud->count);
-            status = -1;
+            status = CLOUD_ERROR_CORRUPT;
         } else if (cloud_reserve_points(&cloud->xyz, capacity, i + 1, cloud->count) != 0) {
             status = out_of_memory(cloud->count, error, error_size);
         } else {
@@ -89,17 +90,17 @@ static int read_ascii_point(FILE *file, const pcd_layout *layout, size_t i, size
         const int status = cloud_read_word(file, word, sizeof word);
         if (status == -1) {
             cloud_set_error(error, error_size, "ascii data truncated at point %zu of %zu", i, count);
-            return -1;
+            return CLOUD_ERROR_CORRUPT;
         }
         if (status != 0) {
             cloud_set_error(error, error_size, "ascii value of point %zu is longer than %d characters", i,
                             PCD_WORD_MAX - 1);
-            return -1;
+            return CLOUD_ERROR_CORRUPT;
         }
         for (axis = 0; axis < 3; ++axis)
             if (layout->value_index[axis] == v && parse_float(word, &xyz[axis]) != 0) {
                 cloud_set_error(error, error_size, "ascii value \"%s\" of point %zu is not a number", word, i);
-                return -1;
+                return CLOUD_ERROR_CORRUPT;
             }
     }
     return 0;
@@ -108,45 +109,57 @@ static int read_ascii_point(FILE *file, const pcd_layout *layout, size_t i, size
 static int read_ascii_points(FILE *file, const pcd_layout *layout, pcd_cloud *cloud, size_t *capacity,
                              char *error, size_t error_size) {
     size_t i;
+    int status;
     for (i = 0; i < cloud->count; ++i) {
         if (cloud_reserve_points(&cloud->xyz, capacity, i + 1, cloud->count) != 0)
             return out_of_memory(cloud->count, error, error_size);
-        if (read_ascii_point(file, layout, i, cloud->count, &cloud->xyz[3 * i], error, error_size) != 0) return -1;
+        status = read_ascii_point(file, layout, i, cloud->count, &cloud->xyz[3 * i], error, error_size);
+        if (status != 0) return status;
     }
     return 0;
 }
 
 static int check_data_kind(const char *data, char *error, size_t error_size) {
-    if (strcmp(data, "binary_compressed") == 0) {
-        cloud_set_error(error, error_size, "DATA binary_compressed (LZF) is unsupported; convert the "
-                        "file to DATA binary or ascii first");
-        return -1;
-    }
-    if (strcmp(data, "binary") != 0 && strcmp(data, "ascii") != 0) {
+    if (strcmp(data, "binary") != 0 && strcmp(data, "ascii") != 0 && strcmp(data, "binary_compressed") != 0) {
         cloud_set_error(error, error_size, "unknown DATA kind \"%s\"", data);
-        return -1;
+        return CLOUD_ERROR_CORRUPT;
     }
     return 0;
 }
 
-static int read_points(FILE *file, const pcd_header *h, pcd_cloud *out, char *error, size_t error_size) {
-    pcd_layout layout;
-    size_t count, capacity = 0;
-    int binary, size_known;
-    if (check_data_kind(h->data, error, error_size) != 0) return -1;
-    if (pcd_compute_layout(h, &layout, error, error_size) != 0) return -1;
-    if (pcd_point_count(h, &count, error, error_size) != 0) return -1;
-    binary = strcmp(h->data, "binary") == 0;
-    if (check_room(file, &layout, binary, count, &size_known, error, error_size) != 0) return -1;
+/* The header's description of the cloud, before its points. */
+static void describe(const pcd_header *h, size_t count, pcd_cloud *out) {
     out->width = (uint32_t)h->width;
     out->height = (uint32_t)h->height;
     out->count = count;
     memcpy(out->viewpoint, h->viewpoint, sizeof out->viewpoint);
+    out->has_viewpoint = h->have_viewpoint;
     snprintf(out->data_format, sizeof out->data_format, "%s", h->data);
-    if (cloud_reserve_points(&out->xyz, &capacity, cloud_first_capacity(count, size_known), count) != 0)
-        return out_of_memory(count, error, error_size);
-    if (binary) return read_binary_points(file, &layout, out, &capacity, error, error_size);
-    return read_ascii_points(file, &layout, out, &capacity, error, error_size);
+}
+
+/* DATA binary or ascii: point after point. */
+static int read_records(FILE *file, const pcd_layout *layout, int binary, pcd_cloud *out, char *error,
+                        size_t error_size) {
+    size_t capacity = 0;
+    int size_known, status;
+    if ((status = check_room(file, layout, binary, out->count, &size_known, error, error_size)) != 0) return status;
+    if (cloud_reserve_points(&out->xyz, &capacity, cloud_first_capacity(out->count, size_known), out->count) != 0)
+        return out_of_memory(out->count, error, error_size);
+    if (binary) return read_binary_points(file, layout, out, &capacity, error, error_size);
+    return read_ascii_points(file, layout, out, &capacity, error, error_size);
+}
+
+static int read_points(FILE *file, const pcd_header *h, pcd_cloud *out, char *error, size_t error_size) {
+    pcd_layout layout;
+    size_t count;
+    int status;
+    if ((status = check_data_kind(h->data, error, error_size)) != 0) return status;
+    if ((status = pcd_compute_layout(h, &layout, error, error_size)) != 0) return status;
+    if ((status = pcd_point_count(h, &count, error, error_size)) != 0) return status;
+    describe(h, count, out);
+    if (strcmp(h->data, "binary_compressed") == 0)
+        return pcd_read_compressed(file, &layout, count, &out->xyz, error, error_size);
+    return read_records(file, &layout, strcmp(h->data, "binary") == 0, out, error, error_size);
 }
 
 static int read_pcd(FILE *file, void *out, char *reason, size_t reason_size) {
@@ -156,14 +169,15 @@ static int read_pcd(FILE *file, void *out, char *reason, size_t reason_size) {
 }
 
 int pcd_read_file(const char *path, pcd_cloud *out, char *error, size_t error_size) {
+    int status;
     if (out == NULL || path == NULL) {
         cloud_set_error(error, error_size, "pcd_read_file: path and out must not be NULL");
-        return -1;
+        return CLOUD_ERROR_INVALID;
     }
     memset(out, 0, sizeof *out);
-    if (cloud_read_path(path, read_pcd, out, error, error_size) != 0) {
+    if ((status = cloud_read_path(path, read_pcd, out, error, error_size)) != 0) {
         pcd_free(out);
-        return -1;
+        return status;
     }
     out->finite_count = cloud_count_finite(out->xyz, out->count);
     return 0;

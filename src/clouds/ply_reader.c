@@ -127,7 +127,7 @@ static int parse_format(ply_header *h, char *words[], int n, char *error, size_t
     else if (strcmp(words[1], "binary_little_endian") == 0) h->binary = 1;
     else {
         cloud_set_error(error, error_size, "format \"%s\" is unsupported (ascii and binary_little_endian are)", words[1]);
-        return -1;
+        return CLOUD_ERROR_UNSUPPORTED;
     }
     return 0;
 }
@@ -172,7 +172,7 @@ static int read_header(FILE *file, ply_header *h, char *error, size_t error_size
         }
         status = apply_header_line(h, line, error, error_size);
     }
-    if (status < 0) return -1;
+    if (status < 0) return status;
     if (h->format[0] == '\0') {
         cloud_set_error(error, error_size, "no format line in the header");
         return -1;
@@ -286,7 +286,7 @@ static int find_xyz(const ply_element *e, int where[3], char *error, size_t erro
         }
         if (e->properties[where[axis]].is_list || e->properties[where[axis]].type_kind != 'f') {
             cloud_set_error(error, error_size, "vertex property \"%s\" is not float or double", axes[axis]);
-            return -1;
+            return CLOUD_ERROR_UNSUPPORTED;
         }
     }
     return 0;
@@ -308,17 +308,17 @@ static int read_vertices(FILE *file, int binary, const ply_element *e, ply_cloud
                          char *error, size_t error_size) {
     int where[3], status, size_known;
     size_t row, capacity = 0;
-    if (find_xyz(e, where, error, error_size) != 0) return -1;
-    if (check_room(file, binary, e, &size_known, error, error_size) != 0) return -1;
+    if ((status = find_xyz(e, where, error, error_size)) != 0) return status;
+    if (check_room(file, binary, e, &size_known, error, error_size) != 0) return CLOUD_ERROR_CORRUPT;
     out->count = (size_t)e->count;
     if (cloud_reserve_points(&out->xyz, &capacity, cloud_first_capacity(out->count, size_known), out->count) != 0) {
         cloud_set_error(error, error_size, "out of memory for %zu vertices", out->count);
-        return -1;
+        return CLOUD_ERROR_NO_MEMORY;
     }
     for (row = 0; row < out->count; ++row) {
         if (cloud_reserve_points(&out->xyz, &capacity, row + 1, out->count) != 0) {
             cloud_set_error(error, error_size, "out of memory for %zu vertices", out->count);
-            return -1;
+            return CLOUD_ERROR_NO_MEMORY;
         }
         if ((status = read_vertex(file, binary, e, where, &out->xyz[3 * row])) != 0)
             return row_error(status, e, row, error, error_size);
@@ -345,14 +345,15 @@ static int read_ply(FILE *file, void *out, char *reason, size_t reason_size) {
 }
 
 int ply_read_file(const char *path, ply_cloud *out, char *error, size_t error_size) {
+    int status;
     if (out == NULL || path == NULL) {
         cloud_set_error(error, error_size, "ply_read_file: path and out must not be NULL");
-        return -1;
+        return CLOUD_ERROR_INVALID;
     }
     memset(out, 0, sizeof *out);
-    if (cloud_read_path(path, read_ply, out, error, error_size) != 0) {
+    if ((status = cloud_read_path(path, read_ply, out, error, error_size)) != 0) {
         ply_free(out);
-        return -1;
+        return status;
     }
     out->finite_count = cloud_count_finite(out->xyz, out->count);
     return 0;

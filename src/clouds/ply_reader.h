@@ -14,6 +14,8 @@
 #ifndef OPX_CLOUDS_PLY_READER_H
 #define OPX_CLOUDS_PLY_READER_H
 
+#include "cloud_status.h"
+
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -29,8 +31,9 @@ typedef struct ply_cloud {
 
 /*
  * Reads the vertices of a PLY file into *out (zeroed first).  Returns 0 on
- * success.  On failure returns -1, leaves *out empty and writes a message
- * naming the file and the problem into error (error_size bytes, may be 0).
+ * success.  On failure returns a CLOUD_ERROR_* (cloud_status.h; all
+ * negative), leaves *out empty and writes a message naming the file and
+ * the problem into error (error_size bytes, may be 0).
  */
 int ply_read_file(const char *path, ply_cloud *out, char *error, size_t error_size);
 

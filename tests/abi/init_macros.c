@@ -21,6 +21,7 @@ int opx_init_macros_compile(void) {
     const opx_contact contact = OPX_CONTACT_INIT;
     const opx_urdf_options urdf_options = OPX_URDF_OPTIONS_INIT;
     const opx_joint_info joint_info = OPX_JOINT_INFO_INIT;
+    const opx_point_cloud_info cloud_info = OPX_POINT_CLOUD_INFO_INIT;
     return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
            insert_options.struct_size == sizeof insert_options &&
            report.struct_size == sizeof report && image.struct_size == sizeof image &&
@@ -30,5 +31,6 @@ int opx_init_macros_compile(void) {
            request.struct_size == sizeof request && result.struct_size == sizeof result &&
            contact.struct_size == sizeof contact &&
            urdf_options.struct_size == sizeof urdf_options &&
-           joint_info.struct_size == sizeof joint_info;
+           joint_info.struct_size == sizeof joint_info &&
+           cloud_info.struct_size == sizeof cloud_info;
 }

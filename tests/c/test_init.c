@@ -84,6 +84,8 @@ INIT_TESTS(opx_urdf_options, opx_urdf_options_init, OPX_URDF_OPTIONS_INIT, "opti
            offsetof(opx_urdf_options, base_dir))
 INIT_TESTS(opx_joint_info, opx_joint_info_init, OPX_JOINT_INFO_INIT, "info",
            offsetof(opx_joint_info, axis))
+INIT_TESTS(opx_point_cloud_info, opx_point_cloud_info_init, OPX_POINT_CLOUD_INFO_INIT, "info",
+           offsetof(opx_point_cloud_info, width))
 
 /* The documented defaults, value by value (the macros could be wrong too). */
 static void default_values_are_documented_ones(void **state) {
@@ -146,6 +148,7 @@ int main(void) {
         INIT_TEST_ENTRIES(opx_octree_stats_init),
         INIT_TEST_ENTRIES(opx_urdf_options_init),
         INIT_TEST_ENTRIES(opx_joint_info_init),
+        INIT_TEST_ENTRIES(opx_point_cloud_info_init),
         cmocka_unit_test(default_values_are_documented_ones),
         cmocka_unit_test(struct_layouts_are_fixed),
     };

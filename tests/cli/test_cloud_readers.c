@@ -10,6 +10,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "cli_run.h"
+#include "fifo_file.h"
 #include "pcd_reader.h"
 #include "ply_reader.h"
 
@@ -78,33 +79,6 @@ static size_t binary_cloud(const char *header, size_t count) {
 
 static void assert_streamed_point(const float *xyz, size_t i) {
     assert_true(xyz[3 * i] == (float)i && xyz[3 * i + 1] == -(float)i && xyz[3 * i + 2] == 0.5f * (float)i);
-}
-
-/* Serves bytes through a named pipe, as a shell's <(...) does: returns the
- * pipe's path; the writer is *writer (wait for it with finish_fifo). */
-static const char *serve_through_fifo(const char *name, const void *bytes, size_t size, pid_t *writer) {
-    const char *path = scratch_path(name);
-    unlink(path);
-    if (mkfifo(path, 0600) != 0) fail_msg("cannot make the pipe %s", path);
-    *writer = fork();
-    if (*writer < 0) fail_msg("cannot fork");
-    if (*writer == 0) {
-        const int fd = open(path, O_WRONLY);
-        const char *at = bytes;
-        while (fd >= 0 && size > 0) {
-            const ssize_t written = write(fd, at, size);
-            if (written <= 0) break;
-            at += written;
-            size -= (size_t)written;
-        }
-        _exit(0);
-    }
-    return path;
-}
-
-static void finish_fifo(pid_t writer) {
-    int status;
-    waitpid(writer, &status, 0);
 }
 
 /* ---- PCD ---- */

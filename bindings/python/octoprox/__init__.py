@@ -18,7 +18,7 @@ from ._library import HEADER_VERSION, lib
 from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionResult, Contact,
                        CostBox, DepthImage, DistanceRequest, DistanceResult, InsertOptions,
                        InsertReport, JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest,
-                       PathResult, Pose, QueryOptions, QueryStats, UrdfOptions)
+                       PathResult, PointCloudInfo, Pose, QueryOptions, QueryStats, UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
@@ -26,6 +26,7 @@ from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FRE
 from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, JOINT_PLANAR,
                     JOINT_PRISMATIC, JOINT_REVOLUTE)
 from .query import ENGINE_AMORTIZED, ENGINE_DIRECT, UNKNOWN_FREE, UNKNOWN_OCCUPIED, Query
+from . import io  # PCD and PLY files as numpy arrays: io.read_pcd, io.read_ply
 
 CELL_UNKNOWN, CELL_FREE, CELL_UNCERTAIN, CELL_OCCUPIED = 0, 1, 2, 3
 INSERT_RAYCAST, INSERT_ENDPOINTS = 0, 1
@@ -49,13 +50,14 @@ def status_name(status):
 __version__ = "%d.%d.%d" % HEADER_VERSION
 
 __all__ = [
-    "Octree", "LinkSet", "Query", "version", "version_number", "status_name", "HEADER_VERSION", "lib",
+    "Octree", "LinkSet", "Query", "io", "version", "version_number", "status_name",
+    "HEADER_VERSION", "lib",
     # results, requests and options (the C structs)
     "CameraIntrinsics", "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox",
     "DepthImage", "DistanceRequest",
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
-    "OctreeStats", "PathRequest", "PathResult", "Pose", "QueryOptions", "QueryStats",
-    "UrdfOptions",
+    "OctreeStats", "PathRequest", "PathResult", "PointCloudInfo", "Pose", "QueryOptions",
+    "QueryStats", "UrdfOptions",
     # exceptions
     "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
     "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",

@@ -127,6 +127,11 @@ SIGNATURES = {
                                          P(s.CollisionResult)]),
     "opx_query_distance_boxes": (status, [handle, handle, P(s.DistanceRequest),
                                           P(s.DistanceResult)]),
+    # io.h
+    "opx_point_cloud_read_file": (status, [c_char_p, P(handle)]),
+    "opx_point_cloud_destroy": (None, [handle]),
+    "opx_point_cloud_get_info": (status, [handle, P(s.PointCloudInfo)]),
+    "opx_point_cloud_get_points": (status, [handle, c_void_p, c_size_t, c_size_t, P(c_size_t)]),
 }
 SIGNATURES.update({init: _versioned_init(struct) for struct, init in s.VERSIONED.items()})
 # Aliases the library keeps for compatibility (the package calls the names

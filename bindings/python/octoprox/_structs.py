@@ -190,6 +190,13 @@ class JointInfo(Struct):
         return out
 
 
+class PointCloudInfo(Struct):
+    """What a PCD or PLY file holds (include/octoprox/io.h)."""
+    _fields_ = [("struct_size", c_uint32), ("format", c_int32), ("encoding", c_int32),
+                ("has_viewpoint", c_int32), ("point_count", c_uint64), ("finite_count", c_uint64),
+                ("width", c_uint64), ("height", c_uint64), ("viewpoint", Pose)]
+
+
 # Each versioned struct and the name of its opx_x_init function.
 VERSIONED = {
     OctreeOptions: "opx_octree_options_init",
@@ -212,4 +219,5 @@ VERSIONED = {
     PathResult: "opx_path_result_init",
     UrdfOptions: "opx_urdf_options_init",
     JointInfo: "opx_joint_info_init",
+    PointCloudInfo: "opx_point_cloud_info_init",
 }
