@@ -120,6 +120,7 @@ int main(int argc, char **argv) {
     write_map_seeds(argv[1]);
     write_pcd_seeds(argv[1]);
     write_ply_seeds(argv[1]);
+    write_depth_seeds(argv[1]);
     write_urdf_seeds(argv[1]);
     write_api_seeds(argv[1]);
     return 0;
