@@ -40,7 +40,7 @@ PathOutcome QueryContext::path(const SensorOctree &tree, const LinkSet &links, c
                                size_t waypoints, const PathSettings &settings) {
     resolution_ = tree.params().resolution;
     contacts_.clear();
-    return path_.run(*engine_, cost_, tree, links, poses, waypoints, settings, cost_boxes_);
+    return path_.run(PathRequest{tree, links, poses, waypoints, settings}, *engine_, cost_, cost_boxes_);
 }
 
 AmortizedEngine &QueryContext::amortized_engine() {

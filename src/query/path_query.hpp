@@ -27,16 +27,26 @@ struct PathOutcome {
     uint64_t narrow_tests = 0;
 };
 
+// What a path query checks: `poses` holds waypoint w's link poses (one per
+// link of `links`) at [w * link_count, (w + 1) * link_count).
+struct PathRequest {
+    const SensorOctree &tree;
+    const LinkSet &links;
+    const std::vector<Pose> &poses;
+    size_t waypoints;
+    const PathSettings &settings;
+};
+
 class PathQuery {
 public:
-    // `poses` holds waypoint w's link poses (one per link of `links`) at
-    // [w * link_count, (w + 1) * link_count).  The cost boxes go to `boxes`.
-    PathOutcome run(Engine &engine, CostPipeline &cost, const SensorOctree &tree, const LinkSet &links,
-                    const std::vector<Pose> &poses, size_t waypoints, const PathSettings &settings,
-                    std::vector<CostBox> &boxes);
+    // Checks the path with `engine`; `cost` gathers the cost of the
+    // waypoints and writes the path's cost boxes to `boxes`.
+    PathOutcome run(const PathRequest &request, Engine &engine, CostPipeline &cost, std::vector<CostBox> &boxes);
 
 private:
     LinkSet &posable_copy(const LinkSet &links);
+    // Puts `moving` (the private copy) at waypoint w's poses.
+    void pose_waypoint(LinkSet &moving, const PathRequest &request, size_t w);
 
     std::unique_ptr<LinkSet> copy_;
     uint64_t copy_source_ = 0;  // identity of the set copied
