@@ -10,11 +10,29 @@
 #include <time.h>
 #include <unistd.h>
 
+/* What the first failure said, for --json's error object. */
+static char g_first_failure[2048];
+static int g_failed = 0;
+static const char *g_library_status = NULL;
+
+/* Prints "octoprox COMMAND: message" ("octoprox: message" without a
+ * command) and keeps the first such message. */
 static void vprint_message(const char *command, const char *format, va_list args) {
-    fprintf(stderr, "octoprox %s: ", command);
+    va_list copy;
+    va_copy(copy, args);
+    if (!g_failed) {
+        vsnprintf(g_first_failure, sizeof g_first_failure, format, copy);
+        g_failed = 1;
+    }
+    va_end(copy);
+    fprintf(stderr, command != NULL ? "octoprox %s: " : "octoprox: ", command);
     vfprintf(stderr, format, args);
     fputc('\n', stderr);
 }
+
+const char *cli_first_failure(void) { return g_first_failure; }
+
+const char *cli_failed_library_status(void) { return g_library_status; }
 
 int cli_fail(const char *command, int code, const char *format, ...) {
     va_list args;
@@ -29,13 +47,15 @@ int cli_usage(const char *command, const char *format, ...) {
     va_start(args, format);
     vprint_message(command, format, args);
     va_end(args);
-    fprintf(stderr, "try 'octoprox %s --help'\n", command);
+    if (command != NULL) fprintf(stderr, "try 'octoprox %s --help'\n", command);
+    else fputs("try 'octoprox --help'\n", stderr);
     return CLI_EXIT_USAGE;
 }
 
 int cli_library_fail(const char *command, opx_status status, const char *what_format, ...) {
     char what[1024];
     va_list args;
+    if (!g_failed) g_library_status = opx_status_name(status);
     va_start(args, what_format);
     vsnprintf(what, sizeof what, what_format, args);
     va_end(args);

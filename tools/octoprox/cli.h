@@ -30,7 +30,13 @@ int cli_library_fail(const char *command, opx_status status, const char *what_fo
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-/* A usage error: the message, then "try 'octoprox COMMAND --help'". */
+/* The first message any of the calls above printed (without "octoprox
+ * COMMAND: "), "" when none; the status name of the failed library call
+ * when the first failure was one, else NULL.  For --json's error object. */
+const char *cli_first_failure(void);
+const char *cli_failed_library_status(void);
+/* A usage error: the message, then "try 'octoprox COMMAND --help'"
+ * (command NULL: an error of the command line before any command). */
 int cli_usage(const char *command, const char *format, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))

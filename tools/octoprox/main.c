@@ -6,6 +6,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "held_report.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -26,8 +27,10 @@ static const char kUsage[] =
     "\n"
     "Run 'octoprox COMMAND --help' for a command's options.  Every command\n"
     "prints a human-readable report; --json prints one JSON object instead\n"
-    "(field names are stable; see docs/cli.md).  A progress bar is drawn on\n"
-    "stderr during long work when stderr is a terminal.\n"
+    "(field names are stable; see docs/cli.md), and on failure one error\n"
+    "object {\"error\": {command, exit_code, status, library_status,\n"
+    "message}} in its place.  A progress bar is drawn on stderr during long\n"
+    "work when stderr is a terminal.\n"
     "\n"
     "Units: metres and radians.  Poses: x,y,z or x,y,z,qx,qy,qz,qw (ROS order),\n"
     "in the map frame.\n"
@@ -63,8 +66,16 @@ static int run(int argc, char **argv) {
     if (strcmp(command, "ingest") == 0) return cmd_ingest(argc - 1, argv + 1);
     if (strcmp(command, "check") == 0) return cmd_check(argc - 1, argv + 1);
     if (strcmp(command, "export") == 0) return cmd_export(argc - 1, argv + 1);
-    fprintf(stderr, "octoprox: unknown command '%s'\ntry 'octoprox --help'\n", command);
-    return CLI_EXIT_USAGE;
+    return cli_usage(NULL, "unknown command '%s'", command);
+}
+
+/* The command argv names, or NULL (none, an option, an unknown name). */
+static const char *command_of(int argc, char **argv) {
+    static const char *const commands[] = {"info", "ingest", "check", "export"};
+    size_t i;
+    for (i = 0; argc > 1 && i < sizeof commands / sizeof commands[0]; ++i)
+        if (strcmp(argv[1], commands[i]) == 0) return commands[i];
+    return NULL;
 }
 
 /* A report that never reached its file (a full disk, /dev/full, a file
@@ -90,6 +101,11 @@ int main(int argc, char **argv) {
     /* Past a file size limit (ulimit -f) a write then fails with EFBIG,
      * which is reported (exit 3), instead of the signal killing the
      * process halfway through a file. */
+    const int json = held_report_wanted(argc, argv);
+    int code;
     signal(SIGXFSZ, SIG_IGN);
-    return close_stdout(run(argc, argv));
+    if (json) held_report_begin();
+    code = run(argc, argv);
+    if (json) code = held_report_end(command_of(argc, argv), code);
+    return close_stdout(code);
 }
