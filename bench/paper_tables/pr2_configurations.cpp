@@ -42,7 +42,7 @@ std::vector<ArmJoint> arm_joints(const opx_linkset *robot) {
         ArmJoint joint{0, -INFINITY, INFINITY};
         check_opx(opx_linkset_find_joint(robot, name, &joint.index), "opx_linkset_find_joint");
         opx_joint_info info = OPX_JOINT_INFO_INIT;
-        check_opx(opx_linkset_joint_info(robot, joint.index, &info), "opx_linkset_joint_info");
+        check_opx(opx_linkset_get_joint_info(robot, joint.index, &info), "opx_linkset_get_joint_info");
         if (info.has_limits && info.type != OPX_JOINT_CONTINUOUS) joint.lower = info.lower, joint.upper = info.upper;
         joints.push_back(joint);
     }

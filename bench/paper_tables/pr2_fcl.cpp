@@ -34,7 +34,7 @@ FclGeometryPtr shape_geometry(const opx_shape &shape) {
 
 std::vector<opx_pose> link_poses(const opx_linkset *links) {
     uint32_t count = 0;
-    check_opx(opx_linkset_link_count(links, &count), "opx_linkset_link_count");
+    check_opx(opx_linkset_get_link_count(links, &count), "opx_linkset_get_link_count");
     std::vector<opx_pose> poses(count, opx_pose(OPX_POSE_IDENTITY));
     for (uint32_t link = 0; link < count; ++link)
         check_opx(opx_linkset_get_pose(links, link, &poses[link]), "opx_linkset_get_pose");
@@ -43,10 +43,10 @@ std::vector<opx_pose> link_poses(const opx_linkset *links) {
 
 FclRobot::FclRobot(const opx_linkset *links) {
     uint32_t count = 0;
-    check_opx(opx_linkset_link_count(links, &count), "opx_linkset_link_count");
+    check_opx(opx_linkset_get_link_count(links, &count), "opx_linkset_get_link_count");
     for (uint32_t link = 0; link < count; ++link) {
         uint32_t shapes = 0;
-        check_opx(opx_linkset_shape_count(links, link, &shapes), "opx_linkset_shape_count");
+        check_opx(opx_linkset_get_shape_count(links, link, &shapes), "opx_linkset_get_shape_count");
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             check_opx(opx_linkset_get_shape(links, link, s, &shape), "opx_linkset_get_shape");

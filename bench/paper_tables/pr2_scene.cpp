@@ -103,10 +103,10 @@ OpxLinksetPtr load_pr2() {
 
 RobotCounts count_robot(const opx_linkset *links) {
     RobotCounts counts;
-    check_opx(opx_linkset_link_count(links, &counts.links), "opx_linkset_link_count");
+    check_opx(opx_linkset_get_link_count(links, &counts.links), "opx_linkset_get_link_count");
     for (uint32_t link = 0; link < counts.links; ++link) {
         uint32_t shapes = 0, meshes = 0;
-        check_opx(opx_linkset_shape_count(links, link, &shapes), "opx_linkset_shape_count");
+        check_opx(opx_linkset_get_shape_count(links, link, &shapes), "opx_linkset_get_shape_count");
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             check_opx(opx_linkset_get_shape(links, link, s, &shape), "opx_linkset_get_shape");

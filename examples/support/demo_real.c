@@ -72,13 +72,14 @@ static int place_camera_and_links(demo_story *s) {
     uint32_t camera, links = 0, l;
     if (opx_linkset_set_named_joint_positions(s->robot, &head, &tilt, 1, &s->base_pose) != OPX_OK ||
         opx_linkset_find_link(s->robot, CAMERA_LINK, &camera) != OPX_OK ||
-        opx_linkset_get_pose(s->robot, camera, &s->sensor_pose) != OPX_OK || opx_linkset_link_count(s->robot, &links) != OPX_OK) {
+        opx_linkset_get_pose(s->robot, camera, &s->sensor_pose) != OPX_OK ||
+        opx_linkset_get_link_count(s->robot, &links) != OPX_OK) {
         fprintf(stderr, "opx-demo --real: %s\n", opx_last_error());
         return -1;
     }
     for (l = 0; l < links; ++l) {
         const char *name = "";
-        opx_linkset_link_name(s->robot, l, &name);
+        opx_linkset_get_link_name(s->robot, l, &name);
         opx_linkset_set_link_enabled(s->robot, l, is_arm_link(name));
     }
     return 0;

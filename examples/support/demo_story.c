@@ -57,7 +57,7 @@ static int plan_path(const demo_story *s, story_state *st) {
     double q[STORY_MAX_JOINTS], start;
     size_t w, j;
     uint32_t l;
-    if (failed(opx_linkset_link_count(s->robot, &st->link_count), "opx_linkset_link_count")) return -1;
+    if (failed(opx_linkset_get_link_count(s->robot, &st->link_count), "opx_linkset_get_link_count")) return -1;
     st->poses = malloc(n * st->link_count * sizeof *st->poses);
     st->results = calloc(n, sizeof *st->results);
     if (st->poses == NULL || st->results == NULL) return failed(OPX_ERROR_OUT_OF_MEMORY, "planning the path");
@@ -192,7 +192,7 @@ static void link_groups(const demo_story *s, uint32_t link_count, int body, uint
     for (l = 0; l < link_count; ++l) {
         const char *name = "";
         int is_body;
-        opx_linkset_link_name(s->robot, l, &name);
+        opx_linkset_get_link_name(s->robot, l, &name);
         is_body = s->is_body_link != NULL && s->is_body_link(name);
         groups[l] = is_body == body ? 0 : UINT32_MAX;
     }

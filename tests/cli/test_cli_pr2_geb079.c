@@ -75,7 +75,7 @@ static answer library_answer(int32_t unknown_policy) {
     options.package_dir_count = 1;
     assert_int_equal(opx_octree_load_file(g_map, NULL, &map), OPX_OK);
     assert_int_equal(opx_linkset_load_urdf_file(g_urdf, &options, &pr2), OPX_OK);
-    assert_int_equal(opx_linkset_joint_count(pr2, &joints), OPX_OK);
+    assert_int_equal(opx_linkset_get_joint_count(pr2, &joints), OPX_OK);
     zeros = calloc(joints + 1, sizeof *zeros);
     assert_int_equal(opx_linkset_set_joint_positions(pr2, zeros, joints, &kBasePose), OPX_OK);
     request.unknown_policy = distance_request.unknown_policy = unknown_policy;

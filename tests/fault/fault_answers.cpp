@@ -234,10 +234,10 @@ void record_shape(Record &record, const opx_shape &s) {
 
 void record_joints(Record &record, const opx_linkset *links) {
     uint32_t joints = 0;
-    record.add("joint_count status", opx_linkset_joint_count(links, &joints));
+    record.add("joint_count status", opx_linkset_get_joint_count(links, &joints));
     for (uint32_t j = 0; j < joints; ++j) {
         opx_joint_info info = OPX_JOINT_INFO_INIT;
-        record.add("joint_info status", opx_linkset_joint_info(links, j, &info));
+        record.add("joint_info status", opx_linkset_get_joint_info(links, j, &info));
         record.add_text("joint name", info.name);
         record.add("joint type", info.type);
         record.add("joint origin", info.origin.position, 3);
@@ -254,18 +254,18 @@ void record_joints(Record &record, const opx_linkset *links) {
 
 void record_linkset(Record &record, const opx_linkset *links) {
     uint32_t count = 0;
-    record.add("link_count status", opx_linkset_link_count(links, &count));
+    record.add("link_count status", opx_linkset_get_link_count(links, &count));
     record.add("link count", count);
     for (uint32_t link = 0; link < count; ++link) {
         const char *name = nullptr;
-        record.add("link_name status", opx_linkset_link_name(links, link, &name));
+        record.add("link_name status", opx_linkset_get_link_name(links, link, &name));
         record.add_text("link name", name);
         opx_pose pose = OPX_POSE_IDENTITY;
         record.add("get_pose status", opx_linkset_get_pose(links, link, &pose));
         record.add("link position", pose.position, 3);
         record.add("link orientation", pose.orientation, 4);
         uint32_t shapes = 0;
-        record.add("shape_count status", opx_linkset_shape_count(links, link, &shapes));
+        record.add("shape_count status", opx_linkset_get_shape_count(links, link, &shapes));
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             record.add("get_shape status", opx_linkset_get_shape(links, link, s, &shape));

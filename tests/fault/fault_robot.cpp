@@ -99,7 +99,7 @@ void arm_pose(opx_linkset *arm, size_t i) {
     require_ok(opx_linkset_set_joint_positions(arm, joints.data(), joints.size(), &base),
                "opx_linkset_set_joint_positions");
     uint32_t count = 0;
-    require_ok(opx_linkset_link_count(arm, &count), "opx_linkset_link_count");
+    require_ok(opx_linkset_get_link_count(arm, &count), "opx_linkset_get_link_count");
     std::vector<opx_pose> poses(count);
     for (uint32_t link = 0; link < count; ++link)
         require_ok(opx_linkset_get_pose(arm, link, &poses[link]), "opx_linkset_get_pose");
@@ -112,7 +112,7 @@ std::vector<opx_pose> arm_link_poses(const opx_linkset *arm, size_t i) {
     require_ok(opx_linkset_clone(arm, &clone), "opx_linkset_clone");
     arm_pose(clone, i);
     uint32_t count = 0;
-    require_ok(opx_linkset_link_count(clone, &count), "opx_linkset_link_count");
+    require_ok(opx_linkset_get_link_count(clone, &count), "opx_linkset_get_link_count");
     std::vector<opx_pose> poses(count);
     for (uint32_t link = 0; link < count; ++link)
         require_ok(opx_linkset_get_pose(clone, link, &poses[link]), "opx_linkset_get_pose");

@@ -58,11 +58,11 @@ opx_linkset *loose_links() {
     require_ok(opx_linkset_create(&links), "opx_linkset_create");
     const opx_linkset *arm = arm_with_gripper();
     uint32_t count = 0;
-    require_ok(opx_linkset_link_count(arm, &count), "opx_linkset_link_count");
+    require_ok(opx_linkset_get_link_count(arm, &count), "opx_linkset_get_link_count");
     for (uint32_t link = 0; link < count; ++link) {
         uint32_t added = 0, shapes = 0;
         require_ok(opx_linkset_add_link(links, "copy", &added), "opx_linkset_add_link");
-        require_ok(opx_linkset_shape_count(arm, link, &shapes), "opx_linkset_shape_count");
+        require_ok(opx_linkset_get_shape_count(arm, link, &shapes), "opx_linkset_get_shape_count");
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             require_ok(opx_linkset_get_shape(arm, link, s, &shape), "opx_linkset_get_shape");

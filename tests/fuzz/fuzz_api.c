@@ -54,7 +54,7 @@ opx_query *take_query(fuzz_api *api) {
 
 uint32_t take_link(fuzz_api *api, const opx_linkset *links) {
     uint32_t count = 0;
-    if (links != NULL) FUZZ_CALL(opx_linkset_link_count, links, &count);
+    if (links != NULL) FUZZ_CALL(opx_linkset_get_link_count, links, &count);
     const uint8_t kind = take_u8(&api->in);
     if (kind < 224) return (uint32_t)take_below(&api->in, (size_t)count + 1);
     return kind & 1 ? UINT32_MAX : take_u32(&api->in);

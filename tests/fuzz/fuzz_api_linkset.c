@@ -104,7 +104,7 @@ void op_linkset_set_poses(fuzz_api *api) {
     fuzz_input *in = &api->in;
     opx_linkset *links = take_linkset(api);
     uint32_t link_count = 0;
-    if (links != NULL) FUZZ_CALL(opx_linkset_link_count, links, &link_count);
+    if (links != NULL) FUZZ_CALL(opx_linkset_get_link_count, links, &link_count);
     /* Mostly the right count; sometimes one off. */
     const uint8_t kind = take_u8(in);
     const size_t count = kind < 224 ? link_count : kind < 240 ? link_count + 1 : take_below(in, 4);
@@ -127,10 +127,10 @@ void op_linkset_read(fuzz_api *api) {
     const opx_linkset *links = take_linkset(api);
     const uint32_t link = take_link(api, links);
     uint32_t count = 0;
-    FUZZ_CALL(opx_linkset_link_count, links, &count);
-    FUZZ_CALL(opx_linkset_shape_count, links, link, &count);
+    FUZZ_CALL(opx_linkset_get_link_count, links, &count);
+    FUZZ_CALL(opx_linkset_get_shape_count, links, link, &count);
     const char *name = NULL;
-    if (FUZZ_CALL(opx_linkset_link_name, links, link, &name) == OPX_OK) {
+    if (FUZZ_CALL(opx_linkset_get_link_name, links, link, &name) == OPX_OK) {
         uint32_t found = 0;
         FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_find_link, links, name, &found) == OPX_OK && found <= link);
     }

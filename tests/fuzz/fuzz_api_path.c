@@ -38,7 +38,7 @@ void op_query_path(fuzz_api *api) {
     const opx_octree *tree = take_tree(api);
     const opx_linkset *links = take_linkset(api);
     uint32_t link_count = 0;
-    if (links != NULL) FUZZ_CALL(opx_linkset_link_count, links, &link_count);
+    if (links != NULL) FUZZ_CALL(opx_linkset_get_link_count, links, &link_count);
     path_poses path;
     take_path_poses(in, link_count, &path);
     opx_path_request request = OPX_PATH_REQUEST_INIT;

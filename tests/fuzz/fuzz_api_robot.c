@@ -80,20 +80,20 @@ static void read_joints(fuzz_api *api, const opx_linkset *links) {
     FUZZ_CALL(opx_linkset_find_joint, links, JOINT_NAMES[take_below(in, JOINT_NAME_COUNT)], &found);
     opx_joint_info info = OPX_JOINT_INFO_INIT;
     info.struct_size = take_struct_size(in, sizeof info);
-    FUZZ_CALL(opx_linkset_joint_info, links, (uint32_t)take_below(in, 10), &info);
+    FUZZ_CALL(opx_linkset_get_joint_info, links, (uint32_t)take_below(in, 10), &info);
     double positions[16];
     size_t count = 0;
     FUZZ_CALL(opx_linkset_get_joint_positions, links, positions, take_below(in, 17), &count);
     uint32_t pairs = 0, first = 0, second = 0;
-    FUZZ_CALL(opx_linkset_disabled_pair_count, links, &pairs);
-    FUZZ_CALL(opx_linkset_disabled_pair, links, (uint32_t)take_below(in, 2), &first, &second);
+    FUZZ_CALL(opx_linkset_get_disabled_pair_count, links, &pairs);
+    FUZZ_CALL(opx_linkset_get_disabled_pair, links, (uint32_t)take_below(in, 2), &first, &second);
 }
 
 /* FK (all joints or named ones) or the joint getters, on any link set. */
 void op_robot_joints(fuzz_api *api) {
     opx_linkset *links = take_linkset(api);
     uint32_t joint_count = 0;
-    if (links != NULL) FUZZ_CALL(opx_linkset_joint_count, links, &joint_count);
+    if (links != NULL) FUZZ_CALL(opx_linkset_get_joint_count, links, &joint_count);
     switch (take_u8(&api->in) % 3) {
     case 0: set_positions(api, links, joint_count); break;
     case 1: set_named_positions(api, links); break;

@@ -39,10 +39,10 @@ bool may_name_a_real_file(const std::string &xml) {
 
 void read_joints(opx_linkset *robot) {
     uint32_t joints = 0;
-    FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_joint_count, robot, &joints) == OPX_OK);
+    FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_joint_count, robot, &joints) == OPX_OK);
     for (uint32_t j = 0; j < joints; ++j) {
         opx_joint_info info = OPX_JOINT_INFO_INIT;
-        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_joint_info, robot, j, &info) == OPX_OK);
+        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_joint_info, robot, j, &info) == OPX_OK);
         FUZZ_REQUIRE(info.name != nullptr);
         uint32_t found = 0;
         FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_find_joint, robot, info.name, &found) == OPX_OK);
@@ -58,12 +58,12 @@ void read_joints(opx_linkset *robot) {
 
 void read_links(opx_linkset *robot) {
     uint32_t links = 0;
-    FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_link_count, robot, &links) == OPX_OK);
+    FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_link_count, robot, &links) == OPX_OK);
     for (uint32_t l = 0; l < links; ++l) {
         const char *name = nullptr;
-        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_link_name, robot, l, &name) == OPX_OK && name != nullptr);
+        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_link_name, robot, l, &name) == OPX_OK && name != nullptr);
         uint32_t shapes = 0;
-        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_shape_count, robot, l, &shapes) == OPX_OK);
+        FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_shape_count, robot, l, &shapes) == OPX_OK);
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             FUZZ_REQUIRE(FUZZ_CALL(opx_linkset_get_shape, robot, l, s, &shape) == OPX_OK);

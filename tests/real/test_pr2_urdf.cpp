@@ -65,16 +65,16 @@ void test_scan_agrees_with_the_data_readme(void **) {
 void test_every_link_and_collision_is_loaded(void **) {
     opx_linkset *robot = load_pr2();
     uint32_t links = 0;
-    real::check_ok(opx_linkset_link_count(robot, &links), "opx_linkset_link_count");
+    real::check_ok(opx_linkset_get_link_count(robot, &links), "opx_linkset_get_link_count");
     assert_int_equal(links, g_scan.links.size());
     size_t meshes = 0;
     for (uint32_t i = 0; i < links; ++i) {
         const scan::Link &expected = g_scan.links[i];
         const char *name = nullptr;
         uint32_t shapes = 0;
-        real::check_ok(opx_linkset_link_name(robot, i, &name), "opx_linkset_link_name");
+        real::check_ok(opx_linkset_get_link_name(robot, i, &name), "opx_linkset_get_link_name");
         assert_string_equal(name, expected.name.c_str());
-        real::check_ok(opx_linkset_shape_count(robot, i, &shapes), "opx_linkset_shape_count");
+        real::check_ok(opx_linkset_get_shape_count(robot, i, &shapes), "opx_linkset_get_shape_count");
         assert_int_equal(shapes, expected.collisions.size());
         for (uint32_t s = 0; s < shapes; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
@@ -96,7 +96,7 @@ void test_every_link_and_collision_is_loaded(void **) {
 void test_joints_follow_the_file(void **) {
     opx_linkset *robot = load_pr2();
     uint32_t count = 0;
-    real::check_ok(opx_linkset_joint_count(robot, &count), "opx_linkset_joint_count");
+    real::check_ok(opx_linkset_get_joint_count(robot, &count), "opx_linkset_get_joint_count");
     assert_int_equal(count, g_scan.joints.size());
     const std::map<std::string, int32_t> types = {{"fixed", OPX_JOINT_FIXED}, {"revolute", OPX_JOINT_REVOLUTE},
                                                   {"continuous", OPX_JOINT_CONTINUOUS},
@@ -104,12 +104,12 @@ void test_joints_follow_the_file(void **) {
     for (uint32_t j = 0; j < count; ++j) {
         const scan::Joint &expected = g_scan.joints[j];
         opx_joint_info info = OPX_JOINT_INFO_INIT;
-        real::check_ok(opx_linkset_joint_info(robot, j, &info), "opx_linkset_joint_info");
+        real::check_ok(opx_linkset_get_joint_info(robot, j, &info), "opx_linkset_get_joint_info");
         assert_string_equal(info.name, expected.name.c_str());
         assert_int_equal(info.type, types.at(expected.type));
         const char *parent = nullptr, *child = nullptr;
-        real::check_ok(opx_linkset_link_name(robot, info.parent_link, &parent), "parent name");
-        real::check_ok(opx_linkset_link_name(robot, info.child_link, &child), "child name");
+        real::check_ok(opx_linkset_get_link_name(robot, info.parent_link, &parent), "parent name");
+        real::check_ok(opx_linkset_get_link_name(robot, info.child_link, &child), "child name");
         assert_string_equal(parent, expected.parent.c_str());
         assert_string_equal(child, expected.child.c_str());
         if (expected.has_limit && expected.type != "continuous") {
@@ -215,7 +215,7 @@ void test_srdf_pairs(void **) {
     assert_int_equal(expected, 1081);
     opx_linkset *robot = load_pr2(g_srdf_path.c_str());
     uint32_t count = 0;
-    real::check_ok(opx_linkset_disabled_pair_count(robot, &count), "opx_linkset_disabled_pair_count");
+    real::check_ok(opx_linkset_get_disabled_pair_count(robot, &count), "opx_linkset_get_disabled_pair_count");
     assert_int_equal(count, expected);
     opx_linkset_destroy(robot);
 }

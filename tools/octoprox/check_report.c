@@ -14,14 +14,14 @@ const char *check_class_name(int32_t cell_class) {
 
 const char *check_link_name(const opx_linkset *links, uint32_t link) {
     const char *name = "?";
-    opx_linkset_link_name(links, link, &name);
+    opx_linkset_get_link_name(links, link, &name);
     return name;
 }
 
 void check_print_head(const check_context *c) {
     uint32_t links = 0;
     const char *policy = c->unknown_policy == OPX_UNKNOWN_OCCUPIED ? "occupied" : "free";
-    opx_linkset_link_count(c->links, &links);
+    opx_linkset_get_link_count(c->links, &links);
     if (!c->json) {
         printf("map        %s\nrobot      %s (%u links)\nunknown    %s\n", c->map_path, c->urdf_path, links, policy);
         return;
@@ -66,7 +66,7 @@ void check_print_contacts(const check_context *c, const opx_collision_result *r)
     static unsigned char mark[65536];
     uint32_t link_count = 0, l;
     size_t listed = r->contact_count < CHECK_MAX_LISTED ? (size_t)r->contact_count : CHECK_MAX_LISTED, i, first = 1;
-    opx_linkset_link_count(c->links, &link_count);
+    opx_linkset_get_link_count(c->links, &link_count);
     if (link_count > sizeof mark) link_count = sizeof mark;
     colliding_links(c, r->contact_count, mark, link_count);
     if (c->json) printf(",\n  \"contact_count\": %llu,\n  \"colliding_links\": [", (unsigned long long)r->contact_count);

@@ -111,7 +111,7 @@ static int path_poses(const check_context *c, opx_linkset *links, const robot_ar
     uint32_t link_count = 0, l;
     size_t w;
     cli_progress progress;
-    opx_linkset_link_count(links, &link_count);
+    opx_linkset_get_link_count(links, &link_count);
     *out = malloc(csv->waypoint_count * (link_count ? link_count : 1) * sizeof(opx_pose));
     if (*out == NULL) return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's poses");
     cli_progress_start(&progress, "kinematics of the path", csv->waypoint_count);

@@ -137,7 +137,7 @@ static void print_report(const export_args *a, const long long cells[2], const o
     for (l = 0; l < link_count; ++l) {
         const char *name = "?";
         if (!colliding[l]) continue;
-        opx_linkset_link_name(links, l, &name);
+        opx_linkset_get_link_name(links, l, &name);
         if (a->json) {
             fputs(first ? "" : ", ", stdout);
             json_string(stdout, name);
@@ -155,7 +155,7 @@ static int add_robot(const export_args *a, const opx_octree *map, mesh_out *mesh
     uint32_t *groups, l;
     int code = robot_load(&a->robot, "export", links);
     if (code >= 0) return code;
-    opx_linkset_link_count(*links, link_count);
+    opx_linkset_get_link_count(*links, link_count);
     *colliding = calloc(*link_count + 1, 1);
     groups = calloc(*link_count + 1, sizeof *groups);
     if (*colliding == NULL || groups == NULL) code = cli_fail("export", CLI_EXIT_INTERNAL, "out of memory");
@@ -163,7 +163,7 @@ static int add_robot(const export_args *a, const opx_octree *map, mesh_out *mesh
     for (l = 0; code < 0 && l < *link_count; ++l) {
         char name[160];
         const char *link_name = "?";
-        opx_linkset_link_name(*links, l, &link_name);
+        opx_linkset_get_link_name(*links, l, &link_name);
         snprintf(name, sizeof name, "%s_%s", (*colliding)[l] ? "colliding" : "link", link_name);
         groups[l] = (*colliding)[l] ? mesh_add_group(mesh, name, 220, 30, 30) : mesh_add_group(mesh, name, 60, 180, 75);
     }

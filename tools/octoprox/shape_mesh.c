@@ -199,12 +199,12 @@ void shape_to_mesh(const opx_shape *shape, const opx_pose *link_pose, mesh_out *
 
 int linkset_to_mesh(const opx_linkset *links, mesh_out *mesh, const uint32_t *groups) {
     uint32_t link_count = 0, link, shape_count, s;
-    if (opx_linkset_link_count(links, &link_count) != OPX_OK) return -1;
+    if (opx_linkset_get_link_count(links, &link_count) != OPX_OK) return -1;
     for (link = 0; link < link_count; ++link) {
         opx_pose pose;
         if (groups[link] == UINT32_MAX) continue;
         if (opx_linkset_get_pose(links, link, &pose) != OPX_OK) return -1;
-        if (opx_linkset_shape_count(links, link, &shape_count) != OPX_OK) return -1;
+        if (opx_linkset_get_shape_count(links, link, &shape_count) != OPX_OK) return -1;
         for (s = 0; s < shape_count; ++s) {
             opx_shape shape = OPX_SHAPE_INIT;
             if (opx_linkset_get_shape(links, link, s, &shape) != OPX_OK) return -1;
