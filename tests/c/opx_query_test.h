@@ -95,7 +95,7 @@ static inline uint32_t add_shape(opx_linkset *links, uint32_t link, opx_shape sh
 
 static inline uint32_t link_count(const opx_linkset *links) {
     uint32_t count = UINT32_MAX;
-    assert_ok(opx_linkset_link_count(links, &count));
+    assert_ok(opx_linkset_get_link_count(links, &count));
     return count;
 }
 
@@ -217,9 +217,9 @@ static inline linkset_snapshot take_linkset_snapshot(const opx_linkset *links) {
     s.links = link_count(links);
     assert_true(s.links <= SNAP_MAX_LINKS);
     for (uint32_t i = 0; i < s.links; ++i) {
-        assert_ok(opx_linkset_shape_count(links, i, &s.shapes[i]));
+        assert_ok(opx_linkset_get_shape_count(links, i, &s.shapes[i]));
         const char *name = NULL;
-        assert_ok(opx_linkset_link_name(links, i, &name));
+        assert_ok(opx_linkset_get_link_name(links, i, &name));
         assert_non_null(name);
         assert_true(strlen(name) < sizeof s.names[i]);
         strcpy(s.names[i], name);

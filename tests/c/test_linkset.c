@@ -54,23 +54,23 @@ static void counts_and_names_reject_bad_arguments(void **state) {
     const linkset_snapshot before = robot_snapshot(robot);
     uint32_t count = 0;
     const char *name = NULL;
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_link_count", "links",
-                   opx_linkset_link_count(NULL, &count));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_link_count", "out_count",
-                   opx_linkset_link_count(robot, NULL));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_shape_count", "links",
-                   opx_linkset_shape_count(NULL, 0, &count));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_shape_count", "out_count",
-                   opx_linkset_shape_count(robot, 0, NULL));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_link_name", "links",
-                   opx_linkset_link_name(NULL, 0, &name));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_link_name", "out_name",
-                   opx_linkset_link_name(robot, 0, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_link_count", "links",
+                   opx_linkset_get_link_count(NULL, &count));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_link_count", "out_count",
+                   opx_linkset_get_link_count(robot, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape_count", "links",
+                   opx_linkset_get_shape_count(NULL, 0, &count));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape_count", "out_count",
+                   opx_linkset_get_shape_count(robot, 0, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_link_name", "links",
+                   opx_linkset_get_link_name(NULL, 0, &name));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_link_name", "out_name",
+                   opx_linkset_get_link_name(robot, 0, NULL));
     for (size_t i = 0; i < N_BAD_LINKS; ++i) {
-        expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_shape_count",
-                       link_arg(BAD_LINKS[i]), opx_linkset_shape_count(robot, BAD_LINKS[i], &count));
-        expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_link_name", link_arg(BAD_LINKS[i]),
-                       opx_linkset_link_name(robot, BAD_LINKS[i], &name));
+        expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_shape_count",
+                       link_arg(BAD_LINKS[i]), opx_linkset_get_shape_count(robot, BAD_LINKS[i], &count));
+        expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_link_name", link_arg(BAD_LINKS[i]),
+                       opx_linkset_get_link_name(robot, BAD_LINKS[i], &name));
     }
     assert_linkset_unchanged(robot, &before);
     opx_linkset_destroy(robot);
@@ -201,9 +201,9 @@ static void names_are_copied_and_found(void **state) {
     assert_int_equal(add_link(links, "wrist"), 2); /* a duplicate */
     assert_int_equal(link_count(links), 3);
     const char *got = NULL;
-    assert_ok(opx_linkset_link_name(links, 0, &got));
+    assert_ok(opx_linkset_get_link_name(links, 0, &got));
     assert_string_equal(got, "wrist");
-    assert_ok(opx_linkset_link_name(links, 1, &got));
+    assert_ok(opx_linkset_get_link_name(links, 1, &got));
     assert_string_equal(got, "elbow");
     uint32_t index = 77;
     assert_ok(opx_linkset_find_link(links, "wrist", &index));
@@ -211,7 +211,7 @@ static void names_are_copied_and_found(void **state) {
     assert_ok(opx_linkset_find_link(links, "elbow", &index));
     assert_int_equal(index, 1);
     uint32_t shapes = 77;
-    assert_ok(opx_linkset_shape_count(links, 2, &shapes));
+    assert_ok(opx_linkset_get_shape_count(links, 2, &shapes));
     assert_int_equal(shapes, 0);
     /* New links start at the identity. */
     const opx_pose identity = OPX_POSE_IDENTITY;

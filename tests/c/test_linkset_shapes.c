@@ -205,9 +205,9 @@ static void adds_every_kind(void **state) {
     opx_shape s = sphere_shape(0.2);
     assert_ok(opx_linkset_add_shape(links, 0, &s, NULL)); /* out_shape may be NULL */
     uint32_t count = 0;
-    assert_ok(opx_linkset_shape_count(links, 0, &count));
+    assert_ok(opx_linkset_get_shape_count(links, 0, &count));
     assert_int_equal(count, 2);
-    assert_ok(opx_linkset_shape_count(links, 1, &count));
+    assert_ok(opx_linkset_get_shape_count(links, 1, &count));
     assert_int_equal(count, 5);
     /* The hull and mesh sit at link b: 0.75 from the cell (x = 1.0 + 0). */
     const opx_pose poses[2] = {pose_at(-5, -5, -5), pose_at(1.0, C0, C0)};

@@ -32,13 +32,13 @@ static void links_shapes_and_joints_come_from_the_file(void **state) {
     for (uint32_t i = 0; i < TEST_LINKS; ++i) {
         const char *name = NULL;
         uint32_t count = 99;
-        assert_ok(opx_linkset_link_name(robot, i, &name));
+        assert_ok(opx_linkset_get_link_name(robot, i, &name));
         assert_string_equal(name, link_names[i]);
-        assert_ok(opx_linkset_shape_count(robot, i, &count));
+        assert_ok(opx_linkset_get_shape_count(robot, i, &count));
         assert_int_equal(count, shapes[i]);
     }
     uint32_t joints = 0, index = 99;
-    assert_ok(opx_linkset_joint_count(robot, &joints));
+    assert_ok(opx_linkset_get_joint_count(robot, &joints));
     assert_int_equal(joints, TEST_JOINTS);
     assert_ok(opx_linkset_find_joint(robot, "wheel", &index));
     assert_int_equal(index, J_WHEEL);
@@ -49,7 +49,7 @@ static void links_shapes_and_joints_come_from_the_file(void **state) {
 
 static opx_joint_info info_of(const opx_linkset *robot, uint32_t joint) {
     opx_joint_info info = OPX_JOINT_INFO_INIT;
-    assert_ok(opx_linkset_joint_info(robot, joint, &info));
+    assert_ok(opx_linkset_get_joint_info(robot, joint, &info));
     assert_int_equal(info.struct_size, sizeof info);
     return info;
 }
@@ -269,7 +269,7 @@ static void clone_copies_the_joint_tree(void **state) {
     assert_ok(opx_linkset_clone(robot, &copy));
     opx_linkset_destroy(robot); /* the copy owns its names and tree */
     uint32_t joints = 0;
-    assert_ok(opx_linkset_joint_count(copy, &joints));
+    assert_ok(opx_linkset_get_joint_count(copy, &joints));
     assert_int_equal(joints, TEST_JOINTS);
     assert_string_equal(info_of(copy, J_FINGER).name, "finger");
     const char *const names[1] = {"shoulder"};
@@ -345,7 +345,7 @@ static void a_single_link_robot_follows_its_base_pose(void **state) {
                                            "<sphere radius=\"0.1\"/></geometry></collision></link></robot>",
                                            NULL, &robot));
     uint32_t joints = 99;
-    assert_ok(opx_linkset_joint_count(robot, &joints));
+    assert_ok(opx_linkset_get_joint_count(robot, &joints));
     assert_int_equal(joints, 0);
     const opx_pose base = pose_at(1.0, -2.0, 0.5);
     assert_ok(opx_linkset_set_joint_positions(robot, NULL, 0, &base));

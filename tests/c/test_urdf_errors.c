@@ -228,11 +228,11 @@ static void a_set_without_joints_has_no_fk(void **state) {
                    opx_linkset_set_named_joint_positions(robot, names, q, 1, NULL));
     uint32_t count = 99;
     size_t positions = 99;
-    assert_ok(opx_linkset_joint_count(robot, &count));
+    assert_ok(opx_linkset_get_joint_count(robot, &count));
     assert_int_equal(count, 0);
     assert_ok(opx_linkset_get_joint_positions(robot, NULL, 0, &positions));
     assert_int_equal(positions, 0);
-    assert_ok(opx_linkset_disabled_pair_count(robot, &count));
+    assert_ok(opx_linkset_get_disabled_pair_count(robot, &count));
     assert_int_equal(count, 0);
     opx_linkset_destroy(robot);
 }
@@ -241,17 +241,22 @@ static void joint_queries_reject_bad_arguments(void **state) {
     (void)state;
     opx_linkset *robot = load_test_robot();
     uint32_t index = 99, count = 0;
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_joint_count", "links", opx_linkset_joint_count(NULL, &count));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_joint_count", "out_count", opx_linkset_joint_count(robot, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_joint_count", "links",
+                   opx_linkset_get_joint_count(NULL, &count));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_joint_count", "out_count",
+                   opx_linkset_get_joint_count(robot, NULL));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_find_joint", "ghost", opx_linkset_find_joint(robot, "ghost", &index));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_find_joint", "name", opx_linkset_find_joint(robot, NULL, &index));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_find_joint", "out_joint", opx_linkset_find_joint(robot, "wheel", NULL));
     assert_int_equal(index, 99);
     opx_joint_info info = OPX_JOINT_INFO_INIT;
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_joint_info", "joint 5", opx_linkset_joint_info(robot, 5, &info));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_joint_info", "out", opx_linkset_joint_info(robot, 0, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_joint_info", "joint 5",
+                   opx_linkset_get_joint_info(robot, 5, &info));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_joint_info", "out",
+                   opx_linkset_get_joint_info(robot, 0, NULL));
     info.struct_size = 0;
-    expect_failure(OPX_ERROR_VERSION, "opx_linkset_joint_info", "out", opx_linkset_joint_info(robot, 0, &info));
+    expect_failure(OPX_ERROR_VERSION, "opx_linkset_get_joint_info", "out",
+                   opx_linkset_get_joint_info(robot, 0, &info));
     double positions[TEST_JOINTS];
     size_t n = 0;
     expect_failure(OPX_ERROR_BUFFER_TOO_SMALL, "opx_linkset_get_joint_positions", "capacity 4",
@@ -262,12 +267,12 @@ static void joint_queries_reject_bad_arguments(void **state) {
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_joint_positions", "out_count",
                    opx_linkset_get_joint_positions(robot, positions, TEST_JOINTS, NULL));
     uint32_t a = 0, b = 0;
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_disabled_pair_count", "out_count",
-                   opx_linkset_disabled_pair_count(robot, NULL));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_disabled_pair", "pair 0",
-                   opx_linkset_disabled_pair(robot, 0, &a, &b));
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_disabled_pair", "out_link2",
-                   opx_linkset_disabled_pair(robot, 0, &a, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_disabled_pair_count", "out_count",
+                   opx_linkset_get_disabled_pair_count(robot, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_disabled_pair", "pair 0",
+                   opx_linkset_get_disabled_pair(robot, 0, &a, &b));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_disabled_pair", "out_link2",
+                   opx_linkset_get_disabled_pair(robot, 0, &a, NULL));
     opx_linkset_destroy(robot);
 }
 

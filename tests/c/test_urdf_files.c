@@ -210,21 +210,21 @@ static void srdf_disabled_pairs_are_read(void **state) {
     opx_linkset *robot = NULL;
     assert_ok(opx_linkset_load_urdf_string(TEST_URDF, &options, &robot));
     uint32_t count = 0, a = 99, b = 99;
-    assert_ok(opx_linkset_disabled_pair_count(robot, &count));
+    assert_ok(opx_linkset_get_disabled_pair_count(robot, &count));
     assert_int_equal(count, 2);
-    assert_ok(opx_linkset_disabled_pair(robot, 0, &a, &b));
+    assert_ok(opx_linkset_get_disabled_pair(robot, 0, &a, &b));
     assert_int_equal(a, L_BASE);
     assert_int_equal(b, L_ARM);
-    assert_ok(opx_linkset_disabled_pair(robot, 1, &a, &b));
+    assert_ok(opx_linkset_get_disabled_pair(robot, 1, &a, &b));
     assert_int_equal(a, L_TOOL);
     assert_int_equal(b, L_WHEEL);
-    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_disabled_pair", "pair 2",
-                   opx_linkset_disabled_pair(robot, 2, &a, &b));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_linkset_get_disabled_pair", "pair 2",
+                   opx_linkset_get_disabled_pair(robot, 2, &a, &b));
     opx_linkset_destroy(robot);
 
     /* Without an SRDF: no pairs. */
     robot = load_test_robot();
-    assert_ok(opx_linkset_disabled_pair_count(robot, &count));
+    assert_ok(opx_linkset_get_disabled_pair_count(robot, &count));
     assert_int_equal(count, 0);
     opx_linkset_destroy(robot);
     remove_scratch_dir(&d);

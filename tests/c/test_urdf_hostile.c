@@ -110,9 +110,9 @@ static void utf8_names_and_a_leading_byte_order_mark_load(void **state) {
                                            "</joint></robot>",
                                            NULL, &robot));
     const char *name = NULL;
-    assert_ok(opx_linkset_link_name(robot, 0, &name));
+    assert_ok(opx_linkset_get_link_name(robot, 0, &name));
     assert_string_equal(name, "b\xC3\xA4se");
-    assert_ok(opx_linkset_link_name(robot, 1, &name));
+    assert_ok(opx_linkset_get_link_name(robot, 1, &name));
     assert_string_equal(name, "<&#x41;\"\tx"); /* read back as written, no reference undone twice */
     opx_linkset_destroy(robot);
 }
@@ -249,9 +249,9 @@ static void loading_writes_nothing_to_stderr(void **state) {
     opx_linkset *robot = NULL;
     assert_ok(opx_linkset_load_urdf_string(BROKEN_EXTRAS_URDF, NULL, &robot));
     uint32_t count = 0;
-    assert_ok(opx_linkset_link_count(robot, &count));
+    assert_ok(opx_linkset_get_link_count(robot, &count));
     assert_int_equal(count, 2);
-    assert_ok(opx_linkset_shape_count(robot, 0, &count));
+    assert_ok(opx_linkset_get_shape_count(robot, 0, &count));
     assert_int_equal(count, 1);
     opx_linkset_destroy(robot);
 }

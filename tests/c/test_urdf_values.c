@@ -99,7 +99,7 @@ static void joints_need_their_limits_and_axes(void **state) {
     opx_linkset *robot = NULL;
     assert_ok(opx_linkset_load_urdf_string(xml, NULL, &robot));
     opx_joint_info info = OPX_JOINT_INFO_INIT;
-    assert_ok(opx_linkset_joint_info(robot, 0, &info));
+    assert_ok(opx_linkset_get_joint_info(robot, 0, &info));
     assert_true(info.lower == 2.0 && info.upper == 1.0 && info.effort == 1e300 && info.velocity == 0.0);
     opx_linkset_destroy(robot);
 }
