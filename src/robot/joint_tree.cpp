@@ -109,15 +109,21 @@ void JointTree::set_commanded(const double *values) {
     for (size_t j = 0; j < commanded_.size(); ++j) commanded_[j] = values[j];
 }
 
-void JointTree::update_positions() {
+void JointTree::update_positions() { positions_from(commanded_.data(), positions_.data()); }
+
+void JointTree::positions_from(const double *commanded, double *positions) const {
     for (size_t j = 0; j < joints_.size(); ++j) {
         const uint32_t master = master_[j];
-        const double master_value = joints_[master].moves() ? commanded_[master] : 0.0;
-        positions_[j] = joints_[j].moves() ? multiplier_[j] * master_value + offset_[j] : 0.0;
+        const double master_value = joints_[master].moves() ? commanded[master] : 0.0;
+        positions[j] = joints_[j].moves() ? multiplier_[j] * master_value + offset_[j] : 0.0;
     }
 }
 
 void JointTree::link_poses(const Pose &base, std::vector<Pose> &poses) const {
+    link_poses(base, positions_.data(), poses.data());
+}
+
+void JointTree::link_poses(const Pose &base, const double *positions, Pose *poses) const {
     poses[root_link_] = base;
     for (uint32_t j : order_) {
         const Joint &joint = joints_[j];
@@ -126,7 +132,7 @@ void JointTree::link_poses(const Pose &base, std::vector<Pose> &poses) const {
         // child = parent * origin * motion(q)
         child.rotation = parent.rotation * joint.origin.rotation;
         child.translation = parent.apply(joint.origin.translation);
-        const double q = positions_[j];
+        const double q = positions[j];
         switch (joint.type) {
         case JointType::kRevolute:
         case JointType::kContinuous:

@@ -63,6 +63,12 @@ public:
     // hold at least link_count() entries.
     void link_poses(const Pose &base, std::vector<Pose> &poses) const;
 
+    // The same FK on values the caller holds, leaving the tree's own
+    // untouched (any number of threads at once): `commanded` and
+    // `positions` hold joint_count() values, `poses` link_count().
+    void positions_from(const double *commanded, double *positions) const;
+    void link_poses(const Pose &base, const double *positions, Pose *poses) const;
+
 private:
     void check_links(const std::string &source) const;
     void order_joints(const std::string &source);
