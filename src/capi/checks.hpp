@@ -77,6 +77,18 @@ opx_status init_struct(const char *function, T *out, size_t size, const T &defau
     });
 }
 
+// Joint positions beyond this (radians or metres) are refused: a mimic
+// joint scales its master's value by up to 1e12, and the poses must stay
+// far from overflow in every distance computation.
+constexpr double kMaxJointPosition = 1e6;
+
+inline bool joint_position_in_range(double value) { return std::fabs(value) <= kMaxJointPosition; }  // false for NaN
+
+[[noreturn]] inline void reject_joint_position(double value, const char *argument) {
+    throw_invalid(format("%s is %g; a joint position is a finite number within +-%g (rad or m)", argument, value,
+                         kMaxJointPosition));
+}
+
 // A pose from the ABI, checked: finite, non-zero quaternion (normalised).
 Pose read_pose(const opx_pose &pose, const char *argument);
 

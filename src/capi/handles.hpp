@@ -2,6 +2,7 @@
 #pragma once
 
 #include "octree/sensor_octree.hpp"
+#include "query/batch/batch_worker.hpp"
 #include "query/context.hpp"
 #include "robot/linkset.hpp"
 #include "robot/robot_model.hpp"
@@ -22,8 +23,9 @@ struct opx_linkset {
 };
 
 struct opx_query {
-    explicit opx_query(const octoprox::ContextOptions &options) : context(options) {}
+    explicit opx_query(const octoprox::ContextOptions &options) : context(options), batch(options) {}
     octoprox::QueryContext context;
+    octoprox::BatchWorkers batch;  // the batch queries' workers (batch.h), kept between calls
 };
 
 namespace octoprox::capi {

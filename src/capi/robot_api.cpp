@@ -33,18 +33,6 @@ UrdfInput read_options(const opx_urdf_options *in, const std::string &default_ba
 
 std::string read_text_file(const char *path) { return read_file_bytes(path, "path"); }
 
-// Joint positions beyond this (radians or metres) are refused: a mimic
-// joint scales its master's value by up to 1e12, and the poses must stay
-// far from overflow in every distance computation.
-constexpr double kMaxJointPosition = 1e6;
-
-bool joint_position_in_range(double value) { return std::fabs(value) <= kMaxJointPosition; }  // false for NaN
-
-[[noreturn]] void reject_joint_position(double value, const char *argument) {
-    throw_invalid(format("%s is %g; a joint position is a finite number within +-%g (rad or m)", argument, value,
-                         kMaxJointPosition));
-}
-
 opx_status load(UrdfInput input, opx_linkset **out) {
     auto handle = std::make_unique<opx_linkset>();
     load_urdf(input, handle->links, handle->robot);

@@ -21,6 +21,9 @@ int opx_init_macros_compile(void) {
     const opx_contact contact = OPX_CONTACT_INIT;
     const opx_urdf_options urdf_options = OPX_URDF_OPTIONS_INIT;
     const opx_joint_info joint_info = OPX_JOINT_INFO_INIT;
+    const opx_batch_request batch_request = OPX_BATCH_REQUEST_INIT;
+    const opx_motion_request motion_request = OPX_MOTION_REQUEST_INIT;
+    const opx_motion_result motion_result = OPX_MOTION_RESULT_INIT;
     const opx_point_cloud_info cloud_info = OPX_POINT_CLOUD_INFO_INIT;
     return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
            insert_options.struct_size == sizeof insert_options &&
@@ -32,5 +35,8 @@ int opx_init_macros_compile(void) {
            contact.struct_size == sizeof contact &&
            urdf_options.struct_size == sizeof urdf_options &&
            joint_info.struct_size == sizeof joint_info &&
+           batch_request.struct_size == sizeof batch_request &&
+           motion_request.struct_size == sizeof motion_request &&
+           motion_result.struct_size == sizeof motion_result &&
            cloud_info.struct_size == sizeof cloud_info;
 }

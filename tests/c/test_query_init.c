@@ -91,6 +91,12 @@ INIT_TESTS(opx_path_request, opx_path_request_init, OPX_PATH_REQUEST_INIT, "requ
            offsetof(opx_path_request, unknown_probability), 0, 0)
 INIT_TESTS(opx_path_result, opx_path_result_init, OPX_PATH_RESULT_INIT, "result",
            offsetof(opx_path_result, total_cost), 0, 0)
+INIT_TESTS(opx_batch_request, opx_batch_request_init, OPX_BATCH_REQUEST_INIT, "request",
+           offsetof(opx_batch_request, compute_distance), 0, 0)
+INIT_TESTS(opx_motion_request, opx_motion_request_init, OPX_MOTION_REQUEST_INIT, "request",
+           offsetof(opx_motion_request, self_collision), 0, 0)
+INIT_TESTS(opx_motion_result, opx_motion_result_init, OPX_MOTION_RESULT_INIT, "result",
+           offsetof(opx_motion_result, steps), 0, 0)
 
 /* The documented defaults, value by value (the macros could be wrong too). */
 static void default_values_are_documented_ones(void **state) {
@@ -133,6 +139,37 @@ static void default_values_are_documented_ones(void **state) {
     assert_ok(opx_path_result_init(&r, sizeof r));
     assert_int_equal(r.first_colliding_waypoint, -1);
     assert_int_equal(r.min_distance_waypoint, -1);
+
+    opx_batch_request b;
+    assert_ok(opx_batch_request_init(&b, sizeof b));
+    assert_int_equal(b.max_threads, 1);
+    assert_int_equal(b.self_collision + b.compute_distance, 0);
+    assert_true(b.distance_cutoff == 0.0);
+
+    opx_motion_request m;
+    assert_ok(opx_motion_request_init(&m, sizeof m));
+    assert_true(m.resolution == 0.01);
+    assert_int_equal(m.max_threads, 1);
+    assert_int_equal(m.max_cost_boxes, 16);
+    assert_int_equal(m.self_collision + m.compute_cost, 0);
+
+    opx_motion_result mr;
+    assert_ok(opx_motion_result_init(&mr, sizeof mr));
+    assert_true(mr.first_collision_fraction == -1.0);
+}
+
+/* The batch structs' layouts: fixed-width fields, no implicit padding. */
+static void batch_struct_layouts_are_fixed(void **state) {
+    (void)state;
+    assert_int_equal(sizeof(opx_batch_request), 40);
+    assert_int_equal(offsetof(opx_batch_request, distance_cutoff), 24);
+    assert_int_equal(offsetof(opx_batch_request, max_threads), 32);
+    assert_int_equal(sizeof(opx_motion_request), 96);
+    assert_int_equal(offsetof(opx_motion_request, resolution), 16);
+    assert_int_equal(offsetof(opx_motion_request, max_threads), 36);
+    assert_int_equal(offsetof(opx_motion_request, region_max), 72);
+    assert_int_equal(sizeof(opx_motion_result), 56);
+    assert_int_equal(offsetof(opx_motion_result, cost_boxes_found), 48);
 }
 
 #define INIT_TEST_ENTRIES(FN)                                                                    \
@@ -151,7 +188,11 @@ int main(void) {
         INIT_TEST_ENTRIES(opx_distance_result_init),
         INIT_TEST_ENTRIES(opx_path_request_init),
         INIT_TEST_ENTRIES(opx_path_result_init),
+        INIT_TEST_ENTRIES(opx_batch_request_init),
+        INIT_TEST_ENTRIES(opx_motion_request_init),
+        INIT_TEST_ENTRIES(opx_motion_result_init),
         cmocka_unit_test(default_values_are_documented_ones),
+        cmocka_unit_test(batch_struct_layouts_are_fixed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

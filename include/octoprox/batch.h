@@ -1,0 +1,180 @@
+/*
+ * Many questions per call, as a motion planner asks them: many joint
+ * configurations of one robot (opx_query_check_configurations) and
+ * joint-space motions (opx_query_check_motion, opx_query_check_motions)
+ * against one map.
+ *
+ * The robot is a link set made from URDF (robot.h); joint vectors hold
+ * joint_count values in model order, as opx_linkset_set_joint_positions
+ * takes them (radians or metres; fixed, floating and planar joints' values
+ * ignored, mimic joints following their masters), each finite and within
+ * +-1e6.  Forward kinematics runs inside the call on the query's own
+ * copies of the link set: the caller's link set is not moved (its poses
+ * and joint positions stay as they are) and is only read, so any number of
+ * queries may check configurations of one link set at once.  Links added
+ * with opx_linkset_add_link after loading keep their current pose.
+ *
+ * A configuration collides when an enabled link touches an obstacle cell
+ * (the rules of opx_query_collide: padding included, touching collides),
+ * or, with self_collision, when two links of an enabled pair touch
+ * (opx_query_self_collide).  The answers are those of the single calls at
+ * the same joint positions (opx_linkset_set_joint_positions, then
+ * opx_query_collide / opx_query_distance), whatever the thread count.
+ *
+ * Threads: max_threads workers split the configurations (or motions); 1
+ * (the default) runs on the caller's thread, 0 takes one per hardware
+ * thread.  Each worker has its own engine and scratch memory, kept in the
+ * opx_query between calls (with OPX_ENGINE_AMORTIZED, each worker builds
+ * its own trees of a frame once), so a warm call allocates nothing per
+ * configuration.  These calls leave the query's results (contacts, cost
+ * boxes, link distances) as they were, but for opx_query_check_motion with
+ * compute_cost, which leaves them as opx_query_path does (its cost boxes,
+ * no contacts).
+ *
+ * Arrays: joint vectors are rows of joint_count doubles, `stride` bytes
+ * apart (0: packed, joint_count * 8 bytes); base poses are opx_pose
+ * elements `base_pose_stride` bytes apart (0: packed).  base_pose_count 0
+ * puts the root link at the map origin (base_poses may be NULL), 1 gives
+ * every row that root pose, and the row count gives each row its own.
+ * Output arrays hold `capacity` elements; a capacity below the row count
+ * is OPX_ERROR_BUFFER_TOO_SMALL and nothing is checked.  On any error the
+ * output arrays' contents are unspecified.
+ */
+#ifndef OCTOPROX_BATCH_H
+#define OCTOPROX_BATCH_H
+
+#include "common.h"
+#include "linkset.h"
+#include "octree.h"
+#include "query.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct opx_batch_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /* as in opx_collision_request */
+    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
+    int32_t self_collision;     /* 1: also the link set's own enabled pairs */
+    /* 1: out_distances gets each configuration's minimum distance between
+     * the enabled links and the obstacles (metres, padding included, 0 when
+     * touching or overlapping; with self_collision, the smaller of that and
+     * the self distance), and no check stops at the first contact. */
+    int32_t compute_distance;
+    /* With compute_distance: obstacles farther than this (metres) are not
+     * searched, the distance is then the cutoff ("at least").  0 (default)
+     * or +infinity: no cutoff. */
+    double distance_cutoff;
+    uint32_t max_threads;       /* 1 (default): the caller's thread; 0: one per hardware thread */
+    uint32_t reserved0;
+} opx_batch_request;
+
+#define OPX_BATCH_REQUEST_INIT {sizeof(opx_batch_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1, 0}
+OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t size);
+
+/*
+ * Checks `configuration_count` joint vectors (rows of `positions`, see
+ * above) of the link set against the octree.  out_collided[i] gets 1 when
+ * configuration i collides, else 0 (it stops at the first contact unless
+ * distances are asked); with compute_distance, out_distances[i] its
+ * minimum distance (out_distances may be NULL otherwise).  joint_count
+ * must equal the link set's joint count.  request may be NULL (defaults).
+ * configuration_count 0 is an invalid argument (an empty batch is most
+ * often a caller's slip).
+ */
+OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_octree *tree,
+                                                  const opx_linkset *links, const double *positions,
+                                                  size_t configuration_count, size_t joint_count,
+                                                  size_t stride, const opx_pose *base_poses,
+                                                  size_t base_pose_count, size_t base_pose_stride,
+                                                  const opx_batch_request *request,
+                                                  uint8_t *out_collided, double *out_distances,
+                                                  size_t capacity);
+
+/* ---- Joint-space motions ---------------------------------------------- */
+
+typedef struct opx_motion_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /* as in opx_collision_request */
+    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
+    /* The largest step of any joint between two checked configurations
+     * (radians or metres, > 0; default 0.01).  A motion from start to goal
+     * is checked at n + 1 configurations, n = ceil(max over joints of
+     * |goal - start| / resolution) (at least 1; mimic joints by their own
+     * positions), configuration i being start + (i / n) (goal - start), the
+     * goal itself for i = n.  At most 1e7 steps per motion. */
+    double resolution;
+    int32_t self_collision;     /* 1: also the link set's own enabled pairs */
+    /* opx_query_check_motion only: 1 also gives the cost of uncertain and
+     * unknown space the motion sweeps through, every configuration checked
+     * (as opx_query_path with compute_cost over the n + 1 configurations:
+     * the boxes are held by the query, opx_query_get_cost_box).  Fields
+     * below as in opx_collision_request. */
+    int32_t compute_cost;
+    uint32_t max_cost_boxes;    /* the costliest boxes kept (default 16) */
+    uint32_t max_threads;       /* opx_query_check_motions: 1 (default) or 0, as above */
+    double unknown_probability; /* 0.5 */
+    double region_min[3];
+    double region_max[3];
+} opx_motion_request;
+
+#define OPX_MOTION_REQUEST_INIT {sizeof(opx_motion_request), OPX_UNKNOWN_FREE, 0.0, 0.01, 0, 0, \
+    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t size);
+
+typedef struct opx_motion_result {
+    uint32_t struct_size;
+    int32_t collided;                /* 1: some configuration of the motion collides */
+    /* Where the first colliding configuration lies: i / n in [0, 1]; -1
+     * when none collides. */
+    double first_collision_fraction;
+    uint64_t steps;                  /* n: the motion is checked at n + 1 configurations */
+    /* Configurations checked: the ends first, then ever finer midpoints,
+     * none beyond the first collision found so far (all with compute_cost). */
+    uint64_t configurations_checked;
+    double total_cost;               /* with compute_cost: m^3, over all cells swept */
+    uint64_t cost_box_count;         /* held by the query (opx_query_get_cost_box) */
+    uint64_t cost_boxes_found;       /* all cells swept */
+} opx_motion_result;
+
+#define OPX_MOTION_RESULT_INIT {sizeof(opx_motion_result), 0, -1.0, 0, 0, 0.0, 0, 0}
+OPX_API opx_status opx_motion_result_init(opx_motion_result *result, size_t size);
+
+/*
+ * Checks the straight joint-space motion from `start` to `goal` (joint_count
+ * values each, model order) at the request's resolution, the root link at
+ * base_pose (map frame; NULL: the origin).  request may be NULL (defaults).
+ */
+OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tree,
+                                          const opx_linkset *links, const double *start,
+                                          const double *goal, size_t joint_count,
+                                          const opx_pose *base_pose,
+                                          const opx_motion_request *request,
+                                          opx_motion_result *out_result);
+
+/*
+ * Checks `motion_count` motions, row m of `starts` to row m of `goals`
+ * (both `stride` bytes per row, see above), as opx_query_check_motion
+ * does (compute_cost is not available here).  out_collided[m] gets 1 when
+ * motion m collides; out_first_fractions[m] (may be NULL) its first
+ * colliding fraction, -1 when none.  A planner's edges between vertices
+ * held in one array of (N, 2, joint_count) doubles go in without a copy:
+ * starts = the array, goals = starts + joint_count, stride =
+ * 2 * joint_count * 8.  motion_count 0 is an invalid argument.
+ */
+OPX_API opx_status opx_query_check_motions(opx_query *query, const opx_octree *tree,
+                                           const opx_linkset *links, const double *starts,
+                                           const double *goals, size_t motion_count,
+                                           size_t joint_count, size_t stride,
+                                           const opx_pose *base_poses, size_t base_pose_count,
+                                           size_t base_pose_stride,
+                                           const opx_motion_request *request,
+                                           uint8_t *out_collided, double *out_first_fractions,
+                                           size_t capacity);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* OCTOPROX_BATCH_H */

@@ -1,0 +1,179 @@
+// C shims: many configurations and joint-space motions per call (batch.h).
+#include "capi/batch_inputs.hpp"
+#include "capi/checks.hpp"
+#include "query/batch/configuration_batch.hpp"
+#include "query/batch/motion_check.hpp"
+
+#include <cmath>
+
+using namespace octoprox;
+using namespace octoprox::capi;
+
+namespace {
+
+void require_handles(const opx_query *query, const opx_octree *tree, const opx_linkset *links) {
+    require_pointer(query, "query");
+    require_pointer(tree, "tree");
+    require_pointer(links, "links");
+}
+
+ConfigurationSettings configuration_settings(const opx_batch_request &r, const SensorOctree &tree) {
+    ConfigurationSettings s;
+    s.collision = yes_no_settings(r.unknown_policy, r.occupancy_threshold, tree);
+    s.self_collision = r.self_collision != 0;
+    s.distance = r.compute_distance != 0;
+    s.distance_settings.unknown_occupied = s.collision.unknown_occupied;
+    s.distance_settings.threshold_log_odds = s.collision.threshold_log_odds;
+    if (std::isnan(r.distance_cutoff) || r.distance_cutoff < 0.0)
+        throw_invalid(format("request->distance_cutoff is %g; 0 (none) or a positive distance is needed",
+                             r.distance_cutoff));
+    if (r.distance_cutoff > 0.0) s.distance_settings.cutoff = r.distance_cutoff;
+    s.threads = r.max_threads;
+    return s;
+}
+
+// The motion request's fields shared with a collision request.
+opx_collision_request as_collision_request(const opx_motion_request &r) {
+    opx_collision_request c = OPX_COLLISION_REQUEST_INIT;
+    c.unknown_policy = r.unknown_policy;
+    c.occupancy_threshold = r.occupancy_threshold;
+    c.max_contacts = 0;
+    c.compute_cost = r.compute_cost;
+    c.max_cost_boxes = r.max_cost_boxes;
+    c.unknown_probability = r.unknown_probability;
+    for (int axis = 0; axis < 3; ++axis) {
+        c.region_min[axis] = r.region_min[axis];
+        c.region_max[axis] = r.region_max[axis];
+    }
+    return c;
+}
+
+MotionSettings motion_settings(const opx_motion_request &r, const SensorOctree &tree) {
+    MotionSettings s;
+    s.collision = collision_settings(as_collision_request(r), tree);
+    if (!(r.resolution > 0.0) || !std::isfinite(r.resolution))
+        throw_invalid(format("request->resolution is %g; a finite step > 0 (rad or m) is needed", r.resolution));
+    s.resolution = r.resolution;
+    s.self_collision = r.self_collision != 0;
+    s.threads = r.max_threads;
+    return s;
+}
+
+opx_motion_result motion_result_to_abi(const MotionAnswer &a, bool cost, const QueryContext &context) {
+    opx_motion_result out = OPX_MOTION_RESULT_INIT;
+    out.collided = a.collided() ? 1 : 0;
+    out.first_collision_fraction = a.fraction();
+    out.steps = a.steps;
+    out.configurations_checked = a.samples_checked;
+    if (cost) {
+        out.total_cost = a.path.cost.total;
+        out.cost_boxes_found = a.path.cost.box_count;
+        out.cost_box_count = context.cost_boxes().size();
+    }
+    return out;
+}
+
+MotionAnswer run_motion(opx_query *query, const opx_octree *tree, const opx_linkset *links, const JointTree &joints,
+                        const double *start, const double *goal, const Pose &base, const MotionSettings &settings) {
+    query->batch.prepare(1, links->links, joints);
+    BatchWorker &worker = query->batch[0];
+    MotionScratch scratch;
+    double largest = 0.0;
+    const double steps = motion_steps(worker.robot(), scratch, start, goal, settings.resolution, largest);
+    require_motion_steps(steps, largest, settings.resolution, "the motion from start to goal");
+    const auto n = static_cast<uint64_t>(steps);
+    if (settings.collision.cost)
+        return check_motion_with_cost(worker, query->context, *tree->tree, links->links, start, goal, n, base,
+                                      settings);
+    return check_motion(worker, scratch, *tree->tree, start, goal, n, base, settings);
+}
+
+}  // namespace
+
+extern "C" {
+
+OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t size) {
+    return init_struct(__func__, request, size, opx_batch_request(OPX_BATCH_REQUEST_INIT), "request");
+}
+
+OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t size) {
+    return init_struct(__func__, request, size, opx_motion_request(OPX_MOTION_REQUEST_INIT), "request");
+}
+
+OPX_API opx_status opx_motion_result_init(opx_motion_result *result, size_t size) {
+    return init_struct(__func__, result, size, opx_motion_result(OPX_MOTION_RESULT_INIT), "result");
+}
+
+OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_octree *tree,
+                                                  const opx_linkset *links, const double *positions,
+                                                  size_t configuration_count, size_t joint_count, size_t stride,
+                                                  const opx_pose *base_poses, size_t base_pose_count,
+                                                  size_t base_pose_stride, const opx_batch_request *request,
+                                                  uint8_t *out_collided, double *out_distances, size_t capacity) {
+    return guard(__func__, [&] {
+        require_handles(query, tree, links);
+        const JointTree &joints = require_joint_tree(links, joint_count);
+        opx_batch_request merged = OPX_BATCH_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const ConfigurationSettings settings = configuration_settings(merged, *tree->tree);
+        require_rows(configuration_count, "configuration_count", capacity);
+        require_pointer(out_collided, "out_collided");
+        if (settings.distance) require_pointer(out_distances, "out_distances");
+        const JointRows rows = read_joint_rows(positions, configuration_count, joint_count, stride, "positions");
+        const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, configuration_count);
+        check_configurations(query->batch, *tree->tree, links->links, joints, rows, bases, settings,
+                             ConfigurationOutputs{out_collided, out_distances});
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                          const double *start, const double *goal, size_t joint_count,
+                                          const opx_pose *base_pose, const opx_motion_request *request,
+                                          opx_motion_result *out_result) {
+    return guard(__func__, [&] {
+        require_handles(query, tree, links);
+        require_out_struct(out_result, "out_result");
+        const JointTree &joints = require_joint_tree(links, joint_count);
+        opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const MotionSettings settings = motion_settings(merged, *tree->tree);
+        const JointRows starts = read_joint_rows(start, 1, joint_count, 0, "start");
+        const JointRows goals = read_joint_rows(goal, 1, joint_count, 0, "goal");
+        const BasePoses base = read_base_poses(base_pose, base_pose == nullptr ? 0 : 1, 0, 1);
+        std::vector<double> from(joint_count), to(joint_count);
+        starts.read(0, from.data()), goals.read(0, to.data());
+        const MotionAnswer answer =
+            run_motion(query, tree, links, joints, from.data(), to.data(), base.at(0), settings);
+        write_versioned(out_result, motion_result_to_abi(answer, settings.collision.cost, query->context),
+                        "out_result");
+        return OPX_OK;
+    });
+}
+
+OPX_API opx_status opx_query_check_motions(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                           const double *starts, const double *goals, size_t motion_count,
+                                           size_t joint_count, size_t stride, const opx_pose *base_poses,
+                                           size_t base_pose_count, size_t base_pose_stride,
+                                           const opx_motion_request *request, uint8_t *out_collided,
+                                           double *out_first_fractions, size_t capacity) {
+    return guard(__func__, [&] {
+        require_handles(query, tree, links);
+        const JointTree &joints = require_joint_tree(links, joint_count);
+        opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
+        read_versioned(request, merged, "request");
+        const MotionSettings settings = motion_settings(merged, *tree->tree);
+        if (settings.collision.cost)
+            throw_invalid("request->compute_cost is 1; the swept cost is given by opx_query_check_motion only");
+        require_rows(motion_count, "motion_count", capacity);
+        require_pointer(out_collided, "out_collided");
+        const JointRows from = read_joint_rows(starts, motion_count, joint_count, stride, "starts");
+        const JointRows to = read_joint_rows(goals, motion_count, joint_count, stride, "goals");
+        const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, motion_count);
+        check_motions(query->batch, *tree->tree, links->links, joints, from, to, bases, settings, out_collided,
+                      out_first_fractions);
+        return OPX_OK;
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,200 @@
+/*
+ * opx_query_check_motion and opx_query_check_motions on the generated arm:
+ * the first colliding configuration equals a brute-force walk over the
+ * same samples with single calls (FK, then opx_query_collide); the batch
+ * equals the single motion call for 1, 2 and 3 threads and both engines;
+ * the swept cost equals opx_query_path over the samples' link poses.
+ */
+#include "opx_batch_test.h"
+
+#define MOTIONS 40
+#define RESOLUTION 0.05
+
+/* The steps the header promises: the largest joint move over the
+ * resolution, the mimic finger moving as much as its master. */
+static uint64_t expected_steps(const double *a, const double *b, double resolution) {
+    double largest = 0.0;
+    for (int j = 0; j < ARM_REVOLUTE + 1; ++j) largest = fmax(largest, fabs(b[j] - a[j]));
+    const double steps = ceil(largest / resolution);
+    return steps < 1.0 ? 1 : (uint64_t)steps;
+}
+
+static void sample(const double *a, const double *b, uint64_t i, uint64_t n, double *q) {
+    for (int j = 0; j < ARM_JOINTS; ++j) q[j] = i == n ? b[j] : a[j] + ((double)i / (double)n) * (b[j] - a[j]);
+}
+
+/* The first colliding sample by walking them all in order; -1: none. */
+static int64_t brute_force_first(opx_query *query, const opx_octree *tree, opx_linkset *arm, const double *a,
+                                 const double *b, uint64_t n) {
+    double q[ARM_JOINTS];
+    for (uint64_t i = 0; i <= n; ++i) {
+        sample(a, b, i, n, q);
+        if (single_collides(query, tree, arm, q, NULL)) return (int64_t)i;
+    }
+    return -1;
+}
+
+static void first_collision_equals_brute_force(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double *ends = random_arm_rows(2 * MOTIONS, 31);
+    opx_query *query = new_query(), *single = new_query();
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.resolution = RESOLUTION;
+    int colliding = 0, free_motions = 0;
+    for (size_t m = 0; m < MOTIONS; ++m) {
+        const double *a = ends + 2 * m * ARM_JOINTS, *b = a + ARM_JOINTS;
+        opx_motion_result result = OPX_MOTION_RESULT_INIT;
+        assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &request, &result));
+        const uint64_t n = expected_steps(a, b, RESOLUTION);
+        assert_int_equal(result.steps, n);
+        const int64_t first = brute_force_first(single, tree, arm, a, b, n);
+        assert_int_equal(result.collided, first >= 0);
+        assert_true(result.first_collision_fraction == (first < 0 ? -1.0 : (double)first / (double)n));
+        assert_true(result.configurations_checked <= n + 1);
+        if (first < 0) assert_int_equal(result.configurations_checked, n + 1);
+        colliding += first >= 0, free_motions += first < 0;
+    }
+    assert_true(colliding > 0 && free_motions > 0);
+    opx_query_destroy(single);
+    opx_query_destroy(query);
+    free(ends);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
+/* Short motions from a configuration to a nearby one, so that some are free. */
+static double *nearby_motions(size_t count, uint64_t seed) {
+    double *rows = random_arm_rows(2 * count, seed);
+    for (size_t m = 0; m < count; ++m) {
+        const double *a = rows + 2 * m * ARM_JOINTS;
+        double *b = rows + (2 * m + 1) * ARM_JOINTS;
+        for (int j = 0; j < ARM_REVOLUTE; ++j) b[j] = a[j] + next_uniform(&seed, -0.4, 0.4);
+    }
+    return rows;
+}
+
+static void batch_equals_single_motion_calls(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double *ends = nearby_motions(MOTIONS, 41);
+    const size_t stride = 2 * ARM_JOINTS * sizeof(double);
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.resolution = RESOLUTION;
+    opx_query *single = new_query();
+    const int32_t engines[2] = {OPX_ENGINE_DIRECT, OPX_ENGINE_AMORTIZED};
+    for (int e = 0; e < 2; ++e) {
+        for (uint32_t threads = 1; threads <= 3; ++threads) {
+            opx_query *query = new_query_with(engines[e]);
+            request.max_threads = threads;
+            uint8_t collided[MOTIONS];
+            double fractions[MOTIONS];
+            assert_ok(opx_query_check_motions(query, tree, arm, ends, ends + ARM_JOINTS, MOTIONS, ARM_JOINTS, stride,
+                                              NULL, 0, 0, &request, collided, fractions, MOTIONS));
+            for (size_t m = 0; m < MOTIONS; ++m) {
+                const double *a = ends + 2 * m * ARM_JOINTS;
+                opx_motion_result result = OPX_MOTION_RESULT_INIT;
+                assert_ok(opx_query_check_motion(single, tree, arm, a, a + ARM_JOINTS, ARM_JOINTS, NULL, &request,
+                                                 &result));
+                assert_int_equal(collided[m], result.collided);
+                assert_true(fractions[m] == result.first_collision_fraction);
+            }
+            opx_query_destroy(query);
+        }
+    }
+    opx_query_destroy(single);
+    free(ends);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
+/* The samples' link poses, waypoint-major, as opx_query_path takes them. */
+static opx_pose *sample_poses(opx_linkset *arm, const double *a, const double *b, uint64_t n) {
+    opx_pose *poses = malloc((n + 1) * ARM_LINKS * sizeof *poses);
+    assert_non_null(poses);
+    double q[ARM_JOINTS];
+    for (uint64_t i = 0; i <= n; ++i) {
+        sample(a, b, i, n, q);
+        assert_ok(opx_linkset_set_joint_positions(arm, q, ARM_JOINTS, NULL));
+        arm_poses(arm, poses + i * ARM_LINKS);
+    }
+    return poses;
+}
+
+static void swept_cost_equals_the_path_query(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double *ends = nearby_motions(6, 51);
+    opx_query *query = new_query(), *path = new_query();
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.resolution = RESOLUTION;
+    request.compute_cost = 1;
+    opx_path_request path_request = OPX_PATH_REQUEST_INIT;
+    path_request.compute_cost = 1;
+    for (size_t m = 0; m < 6; ++m) {
+        const double *a = ends + 2 * m * ARM_JOINTS, *b = a + ARM_JOINTS;
+        opx_motion_result result = OPX_MOTION_RESULT_INIT;
+        assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &request, &result));
+        const uint64_t n = result.steps;
+        opx_pose *poses = sample_poses(arm, a, b, n);
+        opx_path_result expected = OPX_PATH_RESULT_INIT;
+        assert_ok(opx_query_path(path, tree, arm, poses, n + 1, 0, 0, &path_request, &expected));
+        assert_int_equal(result.collided, expected.collided);
+        const double fraction = expected.collided ? (double)expected.first_colliding_waypoint / (double)n : -1.0;
+        assert_true(result.first_collision_fraction == fraction);
+        assert_int_equal(result.configurations_checked, n + 1);
+        /* The path's poses went through quaternions: equal to rounding. */
+        assert_near(result.total_cost, expected.total_cost, 1e-12);
+        assert_true(result.total_cost > 0.0);
+        assert_int_equal(result.cost_boxes_found, expected.cost_boxes_found);
+        assert_int_equal(result.cost_box_count, expected.cost_box_count);
+        for (uint64_t k = 0; k < result.cost_box_count; ++k) {
+            opx_cost_box got = OPX_COST_BOX_INIT, want = OPX_COST_BOX_INIT;
+            assert_ok(opx_query_get_cost_box(query, k, &got));
+            assert_ok(opx_query_get_cost_box(path, k, &want));
+            assert_int_equal(got.link, want.link);
+            assert_center(got.cell_center, want.cell_center[0], want.cell_center[1], want.cell_center[2]);
+            assert_near(got.cost, want.cost, 1e-12);
+        }
+        free(poses);
+    }
+    opx_query_destroy(path);
+    opx_query_destroy(query);
+    free(ends);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
+/* A motion that does not move (start = goal) is one step, two samples. */
+static void a_motion_that_stays_put(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double *rows = random_arm_rows(8, 61);
+    opx_query *query = new_query();
+    for (size_t i = 0; i < 8; ++i) {
+        const double *q = rows + i * ARM_JOINTS;
+        opx_motion_result result = OPX_MOTION_RESULT_INIT;
+        assert_ok(opx_query_check_motion(query, tree, arm, q, q, ARM_JOINTS, NULL, NULL, &result));
+        assert_int_equal(result.steps, 1);
+        assert_int_equal(result.collided, single_collides(query, tree, arm, q, NULL));
+        if (result.collided) assert_true(result.first_collision_fraction == 0.0);
+    }
+    opx_query_destroy(query);
+    free(rows);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(first_collision_equals_brute_force),
+        cmocka_unit_test(batch_equals_single_motion_calls),
+        cmocka_unit_test(swept_cost_equals_the_path_query),
+        cmocka_unit_test(a_motion_that_stays_put),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
