@@ -3,24 +3,24 @@
 #include "cli.h"
 #include "cloud_file.h"
 #include "commands.h"
-#include "ingest_depth.h"
+#include "ingest_cloud.h"
 
 #include <string.h>
 #include <unistd.h>
 
 static const char kHelp[] =
     "usage: octoprox ingest INPUT... -o MAP.bt|MAP.ot\n"
-    "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--res 0.05]\n"
-    "                       [--endpoints] [--max-range M] [--json]\n"
+    "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--optical-frame]\n"
+    "                       [--res 0.05] [--endpoints] [--max-range M] [--json]\n"
     "                       [--intrinsics fx,fy,cx,cy --depth-scale S]\n"
     "\n"
     "Inserts each input as one sensor frame (OctoMap semantics: ray-cast, the\n"
     "cells along each ray become more free, the endpoint cells more occupied)\n"
     "and saves the map.  When MAP exists it is loaded and updated; otherwise a\n"
     "new map is made.  Inputs:\n"
-    "  CLOUD.pcd, CLOUD.ply  PCD v0.7 (ascii, binary) and PLY (ascii,\n"
-    "                      binary_little_endian), x y z as float or double,\n"
-    "                      in the SENSOR frame;\n"
+    "  CLOUD.pcd, CLOUD.ply  PCD v0.7 (ascii, binary, binary_compressed) and\n"
+    "                      PLY (ascii, binary_little_endian), x y z as float\n"
+    "                      or double, in the SENSOR frame;\n"
     "  DEPTH.png, DEPTH.tif  16-bit one-channel depth images (PNG, TIFF), seen\n"
     "                      by a pinhole camera whose optical frame (z forward,\n"
     "                      x right, y down) is the SENSOR frame; 0 is no return.\n"
@@ -28,7 +28,14 @@ static const char kHelp[] =
     "options:\n"
     "  -o, --output MAP    the map to write (.bt: occupancy only, .ot: log-odds)\n"
     "  --sensor-pose POSE  the sensor frame in the map frame, for every input\n"
-    "                      (metres; quaternion x,y,z,w; default identity)\n"
+    "                      (metres; quaternion x,y,z,w); default: a PCD's\n"
+    "                      VIEWPOINT (tx ty tz qw qx qy qz), else identity\n"
+    "  --optical-frame     the inputs are in a camera's optical frame (z\n"
+    "                      forward, x right, y down), as camera clouds and\n"
+    "                      depth images are; the sensor pose is then that of\n"
+    "                      the camera's z-up body frame (x forward, y left,\n"
+    "                      z up), so --sensor-pose 0,0,1.2 is a camera 1.2 m\n"
+    "                      up looking along the map's x axis\n"
     "  --res R             resolution of a new map in metres (default 0.05); an\n"
     "                      existing map keeps its own and R must match it\n"
     "  --endpoints         insert endpoints only (no ray-casting, no free space)\n"
@@ -41,7 +48,8 @@ static const char kHelp[] =
     "                      [{file, format, points (pixels of an image),\n"
     "                      points_used, points_nonfinite, points_out_of_range,\n"
     "                      points_outside_map, pixels_no_return, cells_hit,\n"
-    "                      cells_missed, insert_ms}], leaves {occupied,\n"
+    "                      cells_missed, insert_ms, sensor_pose [x, y, z, qx,\n"
+    "                      qy, qz, qw], sensor_pose_from}], leaves {occupied,\n"
     "                      uncertain, free}\n"
     "  -h, --help          this help\n"
     "\n"
@@ -55,6 +63,7 @@ typedef struct ingest_args {
     int input_count;
     const char *output;
     opx_insert_options insert;
+    ingest_frame frame;
     ingest_camera camera;
     double resolution; /* 0: not given */
     int json;
@@ -70,12 +79,14 @@ static int parse_option(cli_args *args, ingest_args *out) {
     int got;
     if (cli_flag(args, "--json")) out->json = 1;
     else if (cli_flag(args, "--endpoints")) out->insert.mode = OPX_INSERT_ENDPOINTS;
+    else if (cli_flag(args, "--optical-frame")) out->frame.optical_frame = 1;
     else if ((got = cli_value(args, "-o")) != 0 || (got = cli_value(args, "--output")) != 0) {
         if (got < 0) return cli_usage("ingest", "-o needs a file name");
         out->output = args->value;
     } else if ((got = cli_value(args, "--sensor-pose")) != 0) {
-        if (got < 0 || cli_parse_pose(args->value, &out->insert.sensor_pose) != 0)
+        if (got < 0 || cli_parse_pose(args->value, &out->frame.sensor_pose) != 0)
             return cli_usage("ingest", "--sensor-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite numbers)");
+        out->frame.has_sensor_pose = 1;
     } else if ((got = cli_value(args, "--res")) != 0) {
         if (got < 0 || cli_parse_double(args->value, &out->resolution) != 0 || !(out->resolution > 0.0))
             return cli_usage("ingest", "--res needs a positive resolution in metres");
@@ -143,38 +154,33 @@ static int open_map(const ingest_args *a, opx_octree **map, int *updated) {
     return -1;
 }
 
-static int insert_cloud(const char *path, opx_octree *map, const opx_insert_options *insert, ingest_result *r) {
-    char error[600];
-    cloud_points cloud;
-    opx_status status;
-    double start;
-    if (cloud_read_file(path, &cloud, error, sizeof error) != 0)
-        return cli_fail("ingest", CLI_EXIT_INPUT, "%s", error);
-    snprintf(r->format, sizeof r->format, "%s", cloud.format);
-    r->points = cloud.count;
-    r->report = (opx_insert_report)OPX_INSERT_REPORT_INIT;
-    start = cli_now_ms();
-    status = cloud.count == 0 ? OPX_OK
-                              : opx_octree_insert_points(map, cloud.xyz, cloud.count, 0, OPX_SCALAR_FLOAT32,
-                                                         insert, &r->report);
-    r->insert_ms = cli_now_ms() - start;
-    cloud_free(&cloud);
-    return status == OPX_OK ? -1 : cli_library_fail("ingest", status, "inserting %s", path);
-}
-
 static void print_input_json(const char *path, const ingest_result *r, int last) {
     const opx_insert_report *p = &r->report;
+    int i;
     fputs("    {\"file\": ", stdout);
     json_string(stdout, path);
     fputs(", \"format\": ", stdout);
     json_string(stdout, r->format);
     printf(", \"points\": %zu, \"points_used\": %llu, \"points_nonfinite\": %llu, \"points_out_of_range\": %llu, "
            "\"points_outside_map\": %llu, \"pixels_no_return\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, "
-           "\"insert_ms\": %.3f}%s\n",
+           "\"insert_ms\": %.3f",
            r->points, (unsigned long long)p->points_used, (unsigned long long)p->points_nonfinite,
            (unsigned long long)p->points_out_of_range, (unsigned long long)p->points_outside_map,
            (unsigned long long)p->pixels_no_return, (unsigned long long)p->cells_hit,
-           (unsigned long long)p->cells_missed, r->insert_ms, last ? "" : ",");
+           (unsigned long long)p->cells_missed, r->insert_ms);
+    fputs(", \"sensor_pose\": [", stdout);
+    for (i = 0; i < 7; ++i) {
+        json_number(stdout, i < 3 ? r->sensor_pose.position[i] : r->sensor_pose.orientation[i - 3]);
+        fputs(i < 6 ? ", " : "]", stdout);
+    }
+    fputs(", \"sensor_pose_from\": ", stdout);
+    json_string(stdout, r->pose_source);
+    printf("}%s\n", last ? "" : ",");
+}
+
+static void print_viewpoint_pose(const opx_pose *p) {
+    printf("  sensor pose from the file's VIEWPOINT: %g,%g,%g,%g,%g,%g,%g (x,y,z,qx,qy,qz,qw)\n", p->position[0],
+           p->position[1], p->position[2], p->orientation[0], p->orientation[1], p->orientation[2], p->orientation[3]);
 }
 
 static void print_report(const ingest_args *a, const ingest_result *results, int updated,
@@ -200,10 +206,20 @@ static void print_report(const ingest_args *a, const ingest_result *results, int
                (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map +
                                     p->pixels_no_return),
                (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, results[i].insert_ms);
+        if (strcmp(results[i].pose_source, "VIEWPOINT") == 0) print_viewpoint_pose(&results[i].sensor_pose);
     }
     printf("%s %s: resolution %g m, leaves occupied %llu, uncertain %llu, free %llu\n",
            updated ? "updated" : "wrote", a->output, s->resolution, (unsigned long long)s->leaves_occupied,
            (unsigned long long)s->leaves_uncertain, (unsigned long long)s->leaves_free);
+}
+
+/* A depth image is in its camera's optical frame: placed by --sensor-pose
+ * (turned by --optical-frame), without a VIEWPOINT. */
+static int ingest_depth(const char *path, const ingest_args *a, opx_octree *map, ingest_result *result) {
+    opx_insert_options insert = a->insert;
+    result->sensor_pose = ingest_sensor_pose(&a->frame, NULL, &result->pose_source);
+    insert.sensor_pose = result->sensor_pose;
+    return ingest_depth_file(path, map, &a->camera, &insert, result);
 }
 
 static int ingest_all(const ingest_args *a, opx_octree *map, ingest_result *results) {
@@ -212,8 +228,8 @@ static int ingest_all(const ingest_args *a, opx_octree *map, ingest_result *resu
     cli_progress_start(&progress, "ingesting", (size_t)a->input_count);
     for (i = 0; i < a->input_count && code < 0; ++i) {
         const char *path = a->inputs[i];
-        code = ingest_is_depth_image(path) ? ingest_depth_file(path, map, &a->camera, &a->insert, &results[i])
-                                           : insert_cloud(path, map, &a->insert, &results[i]);
+        code = ingest_is_depth_image(path) ? ingest_depth(path, a, map, &results[i])
+                                           : ingest_cloud_file(path, map, &a->frame, &a->insert, &results[i]);
         cli_progress_update(&progress, (size_t)i + 1);
     }
     cli_progress_finish(&progress);

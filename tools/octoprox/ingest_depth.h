@@ -16,6 +16,8 @@ typedef struct ingest_result {
     size_t points; /* the cloud's points, or the image's pixels */
     opx_insert_report report;
     double insert_ms;
+    opx_pose sensor_pose;    /* the frame of the input's points, in the map frame */
+    const char *pose_source; /* "--sensor-pose", "VIEWPOINT" or "default" */
 } ingest_result;
 
 typedef struct ingest_camera {
