@@ -65,7 +65,7 @@ OPX_API opx_status opx_shape_init(opx_shape *shape, size_t size);
 
 OPX_API opx_status opx_linkset_create(opx_linkset **out);
 OPX_API void opx_linkset_destroy(opx_linkset *links);
-/* A deep copy (shapes, names, poses, paddings, enabled flags). */
+/* A deep copy (shapes, names, poses, paddings, enabled flags and pairs). */
 OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out);
 
 /* Adds a link named `name` (copied; names need not be unique, but
@@ -107,6 +107,15 @@ OPX_API opx_status opx_linkset_set_link_padding(opx_linkset *links, uint32_t lin
  * or a gripper holding an object).  All links start enabled. */
 OPX_API opx_status opx_linkset_set_link_enabled(opx_linkset *links, uint32_t link,
                                                 int32_t enabled);
+
+/* Whether self-collision queries (self_collision.h) check links a and b
+ * (a != b; the order does not matter).  Every pair starts enabled but the
+ * pairs an SRDF disables (robot.h).  A link that is itself disabled takes
+ * part in no pair, whatever its pairs say. */
+OPX_API opx_status opx_linkset_set_pair_enabled(opx_linkset *links, uint32_t a, uint32_t b,
+                                                int32_t enabled);
+OPX_API opx_status opx_linkset_get_pair_enabled(const opx_linkset *links, uint32_t a, uint32_t b,
+                                                int32_t *out_enabled);
 
 /*
  * Sets the pose of every link in the MAP frame: `count` must equal the

@@ -7,6 +7,7 @@
 #include "linkset.h"
 #include "robot.h"
 #include "query.h"
+#include "self_collision.h"
 #include "batch.h"
 #include "io.h"
 

@@ -69,7 +69,8 @@ typedef struct opx_urdf_options {
      * (opx_linkset_load_urdf_file) or the current directory (_string). */
     const char *base_dir;
     /* Optional SRDF file: its <disable_collisions link1 link2> pairs are
-     * read (and only those), see opx_linkset_get_disabled_pair.  NULL: none. */
+     * read (and only those): self-collision skips them (self_collision.h),
+     * see also opx_linkset_get_disabled_pair.  NULL: none. */
     const char *srdf_path;
 } opx_urdf_options;
 
@@ -162,8 +163,10 @@ OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links,
 OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, double *out,
                                                    size_t capacity, size_t *out_count);
 
-/* SRDF <disable_collisions> pairs (for reporting; the library does no
- * self-collision checks): count, and the two link indices of pair i. */
+/* SRDF <disable_collisions> pairs as the file lists them: count, and the
+ * two link indices of pair i.  Loading disables each in the link set's
+ * self-collision pairs (opx_linkset_get_pair_enabled); later calls to
+ * opx_linkset_set_pair_enabled change the pairs, not this list. */
 OPX_API opx_status opx_linkset_get_disabled_pair_count(const opx_linkset *links,
                                                        uint32_t *out_count);
 OPX_API opx_status opx_linkset_get_disabled_pair(const opx_linkset *links, uint32_t pair,

@@ -93,11 +93,6 @@ void Polytope::expand(int vertex) {
     for (int i = 0; i < edge_count; ++i) add_face(edges[i].a, edges[i].b, vertex);
 }
 
-Vertex support(const Vec3 &center, const Vec3 &half, const Convex &core, const Vec3 &d) {
-    const Vec3 s = core.support(d);
-    const Vec3 c = box_support(center, half, -d);
-    return Vertex{s - c, s, c};
-}
 
 // Witness points from the barycentric coordinates of the origin's
 // projection onto the final face.
@@ -119,11 +114,13 @@ Penetration from_face(const Polytope &p, const Face &f) {
 
 // Grows a simplex whose hull holds the origin on its boundary (GJK stopped
 // with v = 0) into a tetrahedron, adding supports off its affine hull.
-int blow_up(const Vec3 &center, const Vec3 &half, const Convex &core, Vertex *v, int size) {
-    const double eps = 1e-12 * (1.0 + half.norm());
+// `support(d)`: the difference's vertex furthest along d; `eps`: the
+// length below which two difference points are one.
+template <class Support>
+int blow_up(const Support &support, double eps, Vertex *v, int size) {
     auto add_if_new = [&](const Vec3 &d, auto off_hull) {
         for (const Vec3 &dir : {d, Vec3(-d)}) {
-            const Vertex w = support(center, half, core, dir);
+            const Vertex w = support(dir);
             if (off_hull(w.w)) {
                 v[size++] = w;
                 return true;
@@ -150,15 +147,12 @@ int blow_up(const Vec3 &center, const Vec3 &half, const Convex &core, Vertex *v,
     return size;
 }
 
-}  // namespace
-
-Penetration epa_cell_penetration(const Vec3 &cell_center, const Vec3 &cell_half, const Convex &core,
-                                 const Simplex &start) {
-    Penetration touching;
-    touching.on_shape = touching.on_cell = start.size > 0 ? start.c[0] : cell_center;
+// EPA from GJK's simplex; `touching` is the answer when the two only touch.
+template <class Support>
+Penetration epa_run(const Support &support, double eps, const Simplex &start, const Penetration &touching) {
     Polytope p;
     for (int i = 0; i < start.size; ++i) p.vertices[i] = Vertex{start.w[i], start.s[i], start.c[i]};
-    p.vertex_count = start.size == 0 ? 0 : blow_up(cell_center, cell_half, core, p.vertices, start.size);
+    p.vertex_count = start.size == 0 ? 0 : blow_up(support, eps, p.vertices, start.size);
     if (p.vertex_count < 4) return touching;  // flat: they only touch
     // Orient each face away from the vertex it does not hold.
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
@@ -170,7 +164,7 @@ Penetration epa_cell_penetration(const Vec3 &cell_center, const Vec3 &cell_half,
     int best = p.closest_face();
     for (int iteration = 0; iteration < kMaxIterations && best >= 0; ++iteration) {
         const Face &f = p.faces[best];
-        const Vertex next = support(cell_center, cell_half, core, f.normal);
+        const Vertex next = support(f.normal);
         const double gain = next.w.dot(f.normal) - f.offset;
         if (gain <= kRelativeTolerance * std::max(1.0, std::fabs(f.offset)) || p.vertex_count >= kMaxVertices) break;
         p.vertices[p.vertex_count] = next;
@@ -180,6 +174,31 @@ Penetration epa_cell_penetration(const Vec3 &cell_center, const Vec3 &cell_half,
         best = candidate;
     }
     return best >= 0 ? from_face(p, p.faces[best]) : touching;
+}
+
+}  // namespace
+
+Penetration epa_cell_penetration(const Vec3 &cell_center, const Vec3 &cell_half, const Convex &core,
+                                 const Simplex &start) {
+    Penetration touching;
+    touching.on_shape = touching.on_cell = start.size > 0 ? start.c[0] : cell_center;
+    const auto support = [&](const Vec3 &d) {
+        const Vec3 s = core.support(d);
+        const Vec3 c = box_support(cell_center, cell_half, -d);
+        return Vertex{s - c, s, c};
+    };
+    return epa_run(support, 1e-12 * (1.0 + cell_half.norm()), start, touching);
+}
+
+Penetration epa_pair_penetration(const Convex &a, const Convex &b, double scale, const Simplex &start) {
+    Penetration touching;
+    touching.on_shape = touching.on_cell = start.size > 0 ? start.c[0] : b.support(Vec3::UnitX());
+    const auto support = [&](const Vec3 &d) {
+        const Vec3 s = a.support(d);
+        const Vec3 c = b.support(-d);
+        return Vertex{s - c, s, c};
+    };
+    return epa_run(support, 1e-12 * (1.0 + scale), start, touching);
 }
 
 }  // namespace octoprox

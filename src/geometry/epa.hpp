@@ -1,8 +1,8 @@
-// Penetration depth of a convex piece into a cell box, by the expanding
-// polytope algorithm (EPA) on their Minkowski difference, started from the
-// tetrahedron GJK ends with.  Between polytopes it ends on the exact face
-// of the difference; for cylinders to GJK's tolerance.  Fixed-size arrays:
-// no heap allocation.
+// Penetration depth of a convex piece into a cell box (or into another
+// convex piece), by the expanding polytope algorithm (EPA) on their
+// Minkowski difference, started from the tetrahedron GJK ends with.
+// Between polytopes it ends on the exact face of the difference; for
+// cylinders to GJK's tolerance.  Fixed-size arrays: no heap allocation.
 #pragma once
 
 #include "geometry/convex.hpp"
@@ -22,5 +22,10 @@ struct Penetration {
 // origin); a smaller one means the two only touch (depth 0).
 Penetration epa_cell_penetration(const Vec3 &cell_center, const Vec3 &cell_half, const Convex &core,
                                  const Simplex &start);
+
+// The same for two convex pieces a and b from gjk_pair_distance's simplex:
+// on_shape is a's deepest point in b, on_cell where it leaves b; moving a
+// by -depth * normal separates them.  `scale` as in GjkPairQuery.
+Penetration epa_pair_penetration(const Convex &a, const Convex &b, double scale, const Simplex &start);
 
 }  // namespace octoprox

@@ -1,5 +1,6 @@
-// Distance between a cell (an axis-aligned box) and a convex piece, by GJK
-// on their Minkowski difference, in double precision.
+// Distance between a cell (an axis-aligned box) and a convex piece, or
+// between two convex pieces, by GJK on their Minkowski difference, in
+// double precision.
 //
 // Between two polytopes (box, segment, triangle, hull, point) GJK ends on
 // the exact closest features, so distances are exact to rounding (~1e-15
@@ -39,5 +40,20 @@ struct GjkResult {
 };
 
 GjkResult gjk_cell_distance(const GjkQuery &query);
+
+// Two convex pieces, with the same early exits.
+struct GjkPairQuery {
+    const Convex *a = nullptr;
+    const Convex *b = nullptr;
+    // About the size of the two pieces (metres): distances below 1e-13 of
+    // it are rounding noise, the pieces touch.
+    double scale = 1.0;
+    double stop_above = std::numeric_limits<double>::infinity();
+    double stop_below = -1.0;
+};
+
+// As gjk_cell_distance, with on_shape on `a` and on_cell on `b`; when
+// intersecting, the simplex's s points are a's and its c points b's.
+GjkResult gjk_pair_distance(const GjkPairQuery &query);
 
 }  // namespace octoprox

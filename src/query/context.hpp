@@ -9,6 +9,7 @@
 #include "query/cell_description.hpp"
 #include "query/cost_pipeline.hpp"
 #include "query/path_query.hpp"
+#include "query/self/self_collider.hpp"
 
 #include <memory>
 #include <vector>
@@ -58,6 +59,16 @@ public:
     CollisionAnswer collide_boxes(const LinkSet &links, const CollisionSettings &settings);
     DistanceAnswer distance_boxes(const LinkSet &links, const DistanceSettings &settings, bool per_link);
 
+    // The link set against itself at its current poses (query/self/): its
+    // enabled pairs of links.  The contacts stay until the next self query.
+    SelfCollisionOutcome self_collide(const LinkSet &links, const SelfCollisionSettings &settings) {
+        return self_.collide(links, settings, self_contacts_);
+    }
+    SelfDistanceOutcome self_distance(const LinkSet &links, const SelfDistanceSettings &settings) {
+        return self_.distance(links, settings);
+    }
+    const std::vector<SelfContact> &self_contacts() const { return self_contacts_; }
+
     // The results of the last queries.
     const std::vector<Contact> &contacts() const { return contacts_; }
     const std::vector<CostBox> &cost_boxes() const { return cost_boxes_; }
@@ -77,6 +88,8 @@ private:
     std::vector<Contact> contacts_;
     std::vector<CostBox> cost_boxes_;
     std::vector<double> link_distances_;
+    SelfCollider self_;
+    std::vector<SelfContact> self_contacts_;
     double resolution_ = 0.0;
 };
 

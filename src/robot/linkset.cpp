@@ -9,7 +9,8 @@ uint64_t LinkSet::next_identity() {
     return ++counter;
 }
 
-LinkSet::LinkSet(const LinkSet &other) : padding_(other.padding_), generation_(other.generation_) {
+LinkSet::LinkSet(const LinkSet &other)
+    : pairs_(other.pairs_), padding_(other.padding_), generation_(other.generation_) {
     for (const Link &l : other.links_) {
         Link copy;
         copy.name = l.name, copy.padding = l.padding, copy.enabled = l.enabled, copy.pose = l.pose;
@@ -25,6 +26,7 @@ uint32_t LinkSet::add_link(const std::string &name) {
     Link link;
     link.name = name;
     links_.push_back(std::move(link));
+    pairs_.resize(links_.size());
     first_placed_.push_back(static_cast<uint32_t>(placed_.size()));
     mark_topology_stale();
     return static_cast<uint32_t>(links_.size() - 1);
@@ -66,6 +68,11 @@ void LinkSet::set_link_enabled(uint32_t link, bool enabled) {
     links_[link].enabled = enabled;
     place_link(link);
     refit();
+}
+
+void LinkSet::set_pair_enabled(uint32_t a, uint32_t b, bool enabled) {
+    ++generation_;
+    pairs_.set_enabled(a, b, enabled);
 }
 
 // The first poses after the shapes changed also rebuild the topology: a

@@ -1,5 +1,6 @@
 // A robot as links with shapes, paddings, enabled flags and map-frame
-// poses, and the BVH over all placed shapes that queries traverse.  Every
+// poses, the link pairs self-collision checks, and the BVH over all placed
+// shapes that queries traverse.  Every
 // change brings the shapes' boxes up to date at once; a change of the set
 // of shapes (or of which are enabled) only marks the BVH's topology stale,
 // and the first reader of tree() rebuilds it (thread-safe), so adding n
@@ -9,6 +10,7 @@
 // (PlacedShape::place_mesh, thread-safe).
 #pragma once
 
+#include "robot/link_pairs.hpp"
 #include "robot/shape.hpp"
 
 #include <atomic>
@@ -41,6 +43,9 @@ public:
     void set_link_padding(uint32_t link, double padding);
     void set_link_enabled(uint32_t link, bool enabled);
     void set_poses(const std::vector<Pose> &poses);
+    // Whether self-collision queries check links a and b (a != b).
+    void set_pair_enabled(uint32_t a, uint32_t b, bool enabled);
+    const LinkPairs &pairs() const { return pairs_; }
 
     size_t link_count() const { return links_.size(); }
     const Link &link(uint32_t index) const { return links_[index]; }
@@ -70,6 +75,7 @@ private:
     void refit() const;  // after boxes changed
 
     std::vector<Link> links_;
+    LinkPairs pairs_;
     double padding_ = 0.0;
     std::vector<PlacedShape> placed_;
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_

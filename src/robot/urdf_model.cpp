@@ -190,6 +190,13 @@ void read_disabled_pairs(const UrdfInput &input, const LinkSet &links, RobotMode
     }
 }
 
+// Self-collision skips the SRDF's pairs (a pair of a link with itself
+// means nothing: a link never collides with itself).
+void disable_srdf_pairs(const RobotModel &robot, LinkSet &links) {
+    for (const auto &[a, b] : robot.disabled_pairs)
+        if (a != b) links.set_pair_enabled(a, b, false);
+}
+
 }  // namespace
 
 void load_urdf(const UrdfInput &input, LinkSet &links, RobotModel &robot) {
@@ -200,6 +207,7 @@ void load_urdf(const UrdfInput &input, LinkSet &links, RobotModel &robot) {
     add_links(*model, outline, input, links);
     build_joints(*model, outline, input, robot);
     if (!input.srdf_path.empty()) read_disabled_pairs(input, links, robot);
+    disable_srdf_pairs(robot, links);
     robot.apply(links, Pose());
 }
 

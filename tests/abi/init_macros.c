@@ -21,6 +21,12 @@ int opx_init_macros_compile(void) {
     const opx_contact contact = OPX_CONTACT_INIT;
     const opx_urdf_options urdf_options = OPX_URDF_OPTIONS_INIT;
     const opx_joint_info joint_info = OPX_JOINT_INFO_INIT;
+    const opx_self_collision_request self_request = OPX_SELF_COLLISION_REQUEST_INIT;
+    const opx_self_collision_result self_result = OPX_SELF_COLLISION_RESULT_INIT;
+    const opx_self_contact self_contact = OPX_SELF_CONTACT_INIT;
+    const opx_self_distance_request self_distance_request = OPX_SELF_DISTANCE_REQUEST_INIT;
+    const opx_self_distance_result self_distance_result = OPX_SELF_DISTANCE_RESULT_INIT;
+    const opx_pair_sampling_options pair_sampling = OPX_PAIR_SAMPLING_OPTIONS_INIT;
     const opx_batch_request batch_request = OPX_BATCH_REQUEST_INIT;
     const opx_motion_request motion_request = OPX_MOTION_REQUEST_INIT;
     const opx_motion_result motion_result = OPX_MOTION_RESULT_INIT;
@@ -35,6 +41,12 @@ int opx_init_macros_compile(void) {
            contact.struct_size == sizeof contact &&
            urdf_options.struct_size == sizeof urdf_options &&
            joint_info.struct_size == sizeof joint_info &&
+           self_request.struct_size == sizeof self_request &&
+           self_result.struct_size == sizeof self_result &&
+           self_contact.struct_size == sizeof self_contact &&
+           self_distance_request.struct_size == sizeof self_distance_request &&
+           self_distance_result.struct_size == sizeof self_distance_result &&
+           pair_sampling.struct_size == sizeof pair_sampling &&
            batch_request.struct_size == sizeof batch_request &&
            motion_request.struct_size == sizeof motion_request &&
            motion_result.struct_size == sizeof motion_result &&
