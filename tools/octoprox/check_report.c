@@ -18,19 +18,50 @@ const char *check_link_name(const opx_linkset *links, uint32_t link) {
     return name;
 }
 
+static void print_robot_options_text(const robot_args *r, uint32_t disabled_pairs) {
+    int i;
+    if (r->padding > 0.0) printf("padding    %g m\n", r->padding);
+    if (r->disabled_link_count > 0) {
+        fputs("disabled  ", stdout);
+        for (i = 0; i < r->disabled_link_count; ++i) printf(" %s", r->disabled_links[i]);
+        fputc('\n', stdout);
+    }
+    if (r->srdf != NULL) printf("srdf       %s (%u disabled collision pairs)\n", r->srdf, disabled_pairs);
+}
+
+static void print_robot_options_json(const robot_args *r, uint32_t disabled_pairs) {
+    int i;
+    fputs(",\n  \"padding\": ", stdout);
+    json_number(stdout, r->padding);
+    fputs(",\n  \"disabled_links\": [", stdout);
+    for (i = 0; i < r->disabled_link_count; ++i) {
+        fputs(i > 0 ? ", " : "", stdout);
+        json_string(stdout, r->disabled_links[i]);
+    }
+    fputs("],\n  \"srdf\": ", stdout);
+    if (r->srdf != NULL) json_string(stdout, r->srdf);
+    else fputs("null", stdout);
+    printf(",\n  \"srdf_disabled_pairs\": %u", disabled_pairs);
+}
+
 void check_print_head(const check_context *c) {
-    uint32_t links = 0;
+    uint32_t links = 0, disabled_pairs = 0;
     const char *policy = c->unknown_policy == OPX_UNKNOWN_OCCUPIED ? "occupied" : "free";
     opx_linkset_get_link_count(c->links, &links);
+    opx_linkset_get_disabled_pair_count(c->links, &disabled_pairs);
     if (!c->json) {
-        printf("map        %s\nrobot      %s (%u links)\nunknown    %s\n", c->map_path, c->urdf_path, links, policy);
+        printf("map        %s\nrobot      %s (%u links)\n", c->map_path, c->urdf_path, links);
+        print_robot_options_text(c->robot, disabled_pairs);
+        printf("unknown    %s\n", policy);
         return;
     }
     fputs("{\n  \"map\": ", stdout);
     json_string(stdout, c->map_path);
     fputs(",\n  \"urdf\": ", stdout);
     json_string(stdout, c->urdf_path);
-    printf(",\n  \"links\": %u,\n  \"unknown\": \"%s\"", links, policy);
+    printf(",\n  \"links\": %u", links);
+    print_robot_options_json(c->robot, disabled_pairs);
+    printf(",\n  \"unknown\": \"%s\"", policy);
 }
 
 /* Marks which links have contacts; returns how many do. */

@@ -3,11 +3,13 @@
 #define OPX_TOOLS_CHECK_REPORT_H
 
 #include "cli.h"
+#include "robot_args.h"
 
 #define CHECK_MAX_LISTED 10 /* contacts and cost boxes listed */
 
 typedef struct check_context {
     const char *map_path, *urdf_path, *path_file;
+    const robot_args *robot;
     const opx_octree *map;
     const opx_linkset *links;
     opx_query *query;
@@ -18,7 +20,8 @@ typedef struct check_context {
 const char *check_class_name(int32_t cell_class);
 const char *check_link_name(const opx_linkset *links, uint32_t link);
 
-/* The head of the report (map, robot, policy); JSON: opens the object. */
+/* The head of the report (map, robot, its padding, disabled links and
+ * SRDF, policy); JSON: opens the object. */
 void check_print_head(const check_context *c);
 /* Contacts of the last collision query: count, colliding links, a few. */
 void check_print_contacts(const check_context *c, const opx_collision_result *r);

@@ -10,8 +10,10 @@
 
 static const char kHelp[] =
     "usage: octoprox check MAP.bt|MAP.ot --urdf ROBOT.urdf [--package-dir DIR]...\n"
-    "                      [--joints name=value,...] [--base-pose POSE] [--distance]\n"
-    "                      [--cost] [--unknown free|occupied] [--path FILE.csv] [--json]\n"
+    "                      [--srdf ROBOT.srdf] [--joints name=value,...]\n"
+    "                      [--base-pose POSE] [--padding M] [--disable-link NAME]...\n"
+    "                      [--distance] [--cost] [--unknown free|occupied]\n"
+    "                      [--path FILE.csv] [--json]\n"
     "\n"
     "Checks one robot configuration (or a path of them) against the map:\n"
     "collision with the occupied cells (every contact's link is listed), and\n"
@@ -26,7 +28,9 @@ static const char kHelp[] =
     "  --path FILE.csv       check a path: the first line names joints, each\n"
     "                        further line is one waypoint's values; joints not\n"
     "                        in the file keep their --joints values\n"
-    "  --json                one JSON object: map, urdf, links, unknown; then\n"
+    "  --json                one JSON object: map, urdf, links, padding,\n"
+    "                        disabled_links [names], srdf, srdf_disabled_pairs,\n"
+    "                        unknown; then\n"
     "                        contact_count, colliding_links [names], contacts\n"
     "                        [{link, cell_class, cell_center, cell_size}] (one\n"
     "                        configuration) or path {file, waypoints,\n"
@@ -79,6 +83,7 @@ static int parse_arguments(int argc, char **argv, check_args *a) {
     if (a->robot.urdf == NULL) return cli_usage("check", "no robot given (--urdf ROBOT.urdf)");
     a->context.map_path = a->map;
     a->context.urdf_path = a->robot.urdf;
+    a->context.robot = &a->robot;
     return -1;
 }
 

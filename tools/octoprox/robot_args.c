@@ -3,6 +3,8 @@
 
 #include "robot_args.h"
 
+#include "package_paths.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,11 +15,17 @@ const char kRobotOptionsHelp[] =
     "  --urdf ROBOT.urdf     the robot: every link's collision shapes\n"
     "  --package-dir DIR     resolves package://NAME/... mesh URIs as DIR/NAME/...\n"
     "                        (or DIR/... when DIR ends in NAME); NAME=DIR maps\n"
-    "                        one package explicitly; repeatable\n"
+    "                        one package explicitly; repeatable; tried before\n"
+    "                        $ROS_PACKAGE_PATH and $AMENT_PREFIX_PATH (PREFIX/share)\n"
+    "  --srdf ROBOT.srdf     the robot's SRDF (its disable_collisions pairs are\n"
+    "                        reported)\n"
     "  --joints N=V,...      joint positions by name (radians, or metres for\n"
     "                        prismatic joints); unnamed joints stay at 0\n"
     "  --base-pose POSE      the URDF root link in the map frame: x,y,z or\n"
-    "                        x,y,z,qx,qy,qz,qw (default: the map origin)\n";
+    "                        x,y,z,qx,qy,qz,qw (default: the map origin)\n"
+    "  --padding M           metres added around every link's shapes (default 0)\n"
+    "  --disable-link NAME   the link takes part in no query (e.g. one the\n"
+    "                        sensor sees, or a gripper's finger); repeatable\n";
 
 void robot_args_init(robot_args *r) {
     const opx_pose identity = OPX_POSE_IDENTITY;
@@ -36,6 +44,17 @@ int robot_args_option(cli_args *args, robot_args *r, const char *command, int *c
         else if (r->package_dir_count == ROBOT_MAX_PACKAGE_DIRS)
             *code = cli_usage(command, "more than %d --package-dir options", ROBOT_MAX_PACKAGE_DIRS);
         else r->package_dirs[r->package_dir_count++] = args->value;
+    } else if ((got = cli_value(args, "--srdf")) != 0) {
+        if (got < 0) *code = cli_usage(command, "--srdf needs a file name");
+        else r->srdf = args->value;
+    } else if ((got = cli_value(args, "--padding")) != 0) {
+        if (got < 0 || cli_parse_double(args->value, &r->padding) != 0 || !(r->padding >= 0.0))
+            *code = cli_usage(command, "--padding needs a distance in metres (a finite number >= 0)");
+    } else if ((got = cli_value(args, "--disable-link")) != 0) {
+        if (got < 0) *code = cli_usage(command, "--disable-link needs a link name");
+        else if (r->disabled_link_count == ROBOT_MAX_DISABLED_LINKS)
+            *code = cli_usage(command, "more than %d --disable-link options", ROBOT_MAX_DISABLED_LINKS);
+        else r->disabled_links[r->disabled_link_count++] = args->value;
     } else if ((got = cli_value(args, "--joints")) != 0) {
         if (got < 0) *code = cli_usage(command, "--joints needs name=value,...");
         else r->joints = args->value;
@@ -97,17 +116,42 @@ static int apply_joints(const robot_args *r, const char *command, opx_linkset *l
     return status == OPX_OK ? -1 : cli_library_fail(command, status, "setting the joints");
 }
 
-int robot_load(const robot_args *r, const char *command, opx_linkset **out) {
+/* --padding and --disable-link: -1, or an exit code. */
+static int apply_link_options(const robot_args *r, const char *command, opx_linkset *links) {
+    opx_status status = opx_linkset_set_padding(links, r->padding);
+    int i;
+    if (status != OPX_OK) return cli_library_fail(command, status, "--padding %g", r->padding);
+    for (i = 0; i < r->disabled_link_count; ++i) {
+        uint32_t link;
+        if (opx_linkset_find_link(links, r->disabled_links[i], &link) != OPX_OK)
+            return cli_usage(command, "--disable-link: the robot has no link named '%s'", r->disabled_links[i]);
+        if ((status = opx_linkset_set_link_enabled(links, link, 0)) != OPX_OK)
+            return cli_library_fail(command, status, "disabling link %s", r->disabled_links[i]);
+    }
+    return -1;
+}
+
+static int load_urdf(const robot_args *r, const char *command, opx_linkset **out) {
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
+    package_paths packages;
     opx_status status;
+    if (package_paths_build(r->package_dirs, (size_t)r->package_dir_count, &packages) != 0)
+        return cli_fail(command, CLI_EXIT_INTERNAL, "out of memory for the package folders");
+    options.package_dirs = (const char *const *)packages.entries;
+    options.package_dir_count = packages.count;
+    options.srdf_path = r->srdf;
+    status = opx_linkset_load_urdf_file(r->urdf, &options, out);
+    package_paths_free(&packages);
+    return status == OPX_OK ? -1 : cli_library_fail(command, status, "loading the robot %s", r->urdf);
+}
+
+int robot_load(const robot_args *r, const char *command, opx_linkset **out) {
     int code;
     *out = NULL;
     if (r->urdf == NULL) return cli_usage(command, "no robot given (--urdf ROBOT.urdf)");
-    options.package_dirs = r->package_dirs;
-    options.package_dir_count = (size_t)r->package_dir_count;
-    status = opx_linkset_load_urdf_file(r->urdf, &options, out);
-    if (status != OPX_OK) return cli_library_fail(command, status, "loading the robot %s", r->urdf);
-    code = apply_joints(r, command, *out);
+    code = load_urdf(r, command, out);
+    if (code < 0) code = apply_joints(r, command, *out);
+    if (code < 0) code = apply_link_options(r, command, *out);
     if (code >= 0) {
         opx_linkset_destroy(*out);
         *out = NULL;
