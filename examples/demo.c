@@ -164,6 +164,9 @@ static int run_room(const demo_args *a) {
     }
     s.waypoint_count = a->quick ? 11 : 41;
     s.is_body_link = is_pedestal;
+    s.tool_link = "hand";
+    s.picture.tool_label = "HAND";
+    s.picture.body_label = "PEDESTAL (STILL, NOT CHECKED)";
     side_view(&s, &frame, a->quick);
     s.out_dir = a->out_dir;
     s.picture_name = "opx-demo.png";

@@ -61,6 +61,15 @@ void canvas_line(canvas *c, double x0, double y0, double x1, double y1, colour c
     }
 }
 
+void canvas_fill_disc(canvas *c, double cx, double cy, double r, colour col, double alpha) {
+    int x, y;
+    for (y = (int)floor(cy - r); y <= (int)ceil(cy + r); ++y)
+        for (x = (int)floor(cx - r); x <= (int)ceil(cx + r); ++x) {
+            const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
+            if (dx * dx + dy * dy <= r * r) canvas_pixel(c, x, y, col, alpha);
+        }
+}
+
 static double edge(const double a[2], const double b[2], double x, double y) {
     return (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]);
 }

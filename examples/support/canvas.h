@@ -27,6 +27,8 @@ void canvas_fill_rect(canvas *c, int x0, int y0, int x1, int y1, colour col, dou
 void canvas_rect_outline(canvas *c, int x0, int y0, int x1, int y1, colour col, int thickness);
 /* A line of the given thickness (pixels), in float pixel coordinates. */
 void canvas_line(canvas *c, double x0, double y0, double x1, double y1, colour col, double thickness);
+/* A filled disc of radius r pixels centred at (cx, cy). */
+void canvas_fill_disc(canvas *c, double cx, double cy, double r, colour col, double alpha);
 void canvas_fill_triangle(canvas *c, const double a[2], const double b[2], const double d[2], colour col, double alpha);
 /* Text with its top-left corner at (x, y); scale 1 = 5x7 pixels a glyph.
  * Returns the width drawn in pixels. */

@@ -2,6 +2,7 @@
 #include "demo_picture.h"
 
 #include "canvas.h"
+#include "picture_frame.h"
 #include "png_writer.h"
 
 #include <math.h>
@@ -12,24 +13,20 @@
 #define MARGIN_LEFT 56
 #define MARGIN_TOP 44
 #define MARGIN_RIGHT 80
-#define LEGEND_HEIGHT 140
+#define LEGEND_HEIGHT 164
+#define LEGEND_WIDTH 1000 /* its longest line, the last, is 960 pixels */
 
-static const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
-static const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {255, 140, 0};
-static const colour kText = {20, 20, 20}, kSensor = {0, 120, 200}, kBody = {90, 90, 100};
-static const colour kArmColours[PICTURE_MAX_ARMS] = {{30, 150, 70}, {40, 140, 140}, {50, 100, 200}, {120, 70, 190},
-                                                     {170, 60, 160}, {110, 110, 40}, {60, 60, 60}, {0, 0, 0}};
-
-typedef struct frame {
-    canvas c;
-    const picture_view *view;
-    int plot_w, plot_h;
-} frame;
+const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
+const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {255, 140, 0};
+const colour kText = {20, 20, 20}, kSensor = {0, 120, 200};
+/* The still body in brown, apart from the greys and the arms' colours. */
+const colour kBody = {165, 110, 55}, kBodyEdge = {105, 65, 25};
+const colour kArmColours[PICTURE_MAX_ARMS] = {{20, 150, 60}, {0, 150, 175}, {40, 80, 225}, {130, 50, 200},
+                                              {205, 40, 160}, {110, 110, 40}, {60, 60, 60}, {0, 0, 0}};
 
 static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-/* Map point -> pixel (x right along u, y down along -v). */
-static void to_pixel(const frame *f, const double p[3], double out[2]) {
+void picture_to_pixel(const picture_frame *f, const double p[3], double out[2]) {
     const double d[3] = {p[0] - f->view->origin[0], p[1] - f->view->origin[1], p[2] - f->view->origin[2]};
     out[0] = MARGIN_LEFT + (dot(d, f->view->u) - f->view->u_min) * f->view->pixels_per_metre;
     out[1] = MARGIN_TOP + (f->view->v_max - dot(d, f->view->v)) * f->view->pixels_per_metre;
@@ -44,7 +41,7 @@ static colour class_colour(int32_t cell_class) {
     }
 }
 
-static void draw_slice(frame *f, const opx_octree *map) {
+static void draw_slice(picture_frame *f, const opx_octree *map) {
     const picture_view *v = f->view;
     int x, y, axis;
     for (y = 0; y < f->plot_h; ++y)
@@ -59,13 +56,13 @@ static void draw_slice(frame *f, const opx_octree *map) {
 }
 
 /* The pixel rectangle of an axis-aligned map box, projected. */
-static void box_rect(const frame *f, const double lo[3], const double hi[3], int r[4]) {
+static void box_rect(const picture_frame *f, const double lo[3], const double hi[3], int r[4]) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     int i;
     for (i = 0; i < 8; ++i) {
         const double corner[3] = {i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]};
         double px[2];
-        to_pixel(f, corner, px);
+        picture_to_pixel(f, corner, px);
         x0 = fmin(x0, px[0]);
         x1 = fmax(x1, px[0]);
         y0 = fmin(y0, px[1]);
@@ -77,7 +74,7 @@ static void box_rect(const frame *f, const double lo[3], const double hi[3], int
     r[3] = (int)floor(y1 - 0.5);
 }
 
-static void draw_cost_boxes(frame *f, const picture_input *in) {
+static void draw_cost_boxes(picture_frame *f, const picture_input *in) {
     size_t i;
     for (i = 0; i < in->cost_box_count; ++i) {
         int r[4];
@@ -87,42 +84,7 @@ static void draw_cost_boxes(frame *f, const picture_input *in) {
     }
 }
 
-/* A silhouette: every triangle into a mask, then one tint and an outline. */
-static void draw_arm(frame *f, const mesh_out *arm, colour col, int collides) {
-    const size_t n = (size_t)f->c.width * f->c.height;
-    unsigned char *mask = calloc(n, 1);
-    canvas m = {f->c.width, f->c.height, NULL};
-    size_t t, i;
-    if (mask == NULL || canvas_create(&m, f->c.width, f->c.height) != 0) {
-        free(mask);
-        return;
-    }
-    for (t = 0; t < arm->face_count; ++t) {
-        const uint32_t *face = &arm->faces[4 * t];
-        double p[3][2];
-        int k;
-        for (k = 0; k < 3; ++k) {
-            const float *v = &arm->vertices[3 * face[k]];
-            const double q[3] = {v[0], v[1], v[2]};
-            to_pixel(f, q, p[k]);
-        }
-        canvas_fill_triangle(&m, p[0], p[1], p[2], kText, 1.0);
-    }
-    for (i = 0; i < n; ++i) mask[i] = m.rgb[3 * i] < 128;
-    for (i = 0; i < n; ++i) {
-        const int x = (int)(i % f->c.width), y = (int)(i / f->c.width);
-        int edge;
-        if (!mask[i]) continue;
-        edge = x == 0 || y == 0 || x + 1 == (int)f->c.width || y + 1 == (int)f->c.height || !mask[i - 1] ||
-               !mask[i + 1] || !mask[i - f->c.width] || !mask[i + f->c.width];
-        if (edge) canvas_fill_rect(&f->c, x, y, x + (collides ? 1 : 0), y + (collides ? 1 : 0), collides ? kCollision : col, 1.0);
-        else canvas_pixel(&f->c, x, y, col, 0.30);
-    }
-    canvas_free(&m);
-    free(mask);
-}
-
-static void draw_collisions(frame *f, const picture_input *in) {
+static void draw_collisions(picture_frame *f, const picture_input *in) {
     size_t i;
     for (i = 0; i < in->colliding_count; ++i) {
         const double *c = &in->colliding_centers[3 * i], h = 0.5 * in->colliding_sizes[i];
@@ -133,15 +95,15 @@ static void draw_collisions(frame *f, const picture_input *in) {
     }
 }
 
-static void draw_sensor(frame *f, const picture_input *in) {
+static void draw_sensor(picture_frame *f, const picture_input *in) {
     double s[2];
     int i;
-    to_pixel(f, in->sensor, s);
+    picture_to_pixel(f, in->sensor, s);
     for (i = 0; i < in->fov_edge_count; ++i) {
         const double *d = in->fov_edges[i];
         const double far[3] = {in->sensor[0] + 30 * d[0], in->sensor[1] + 30 * d[1], in->sensor[2] + 30 * d[2]};
         double e[2], t;
-        to_pixel(f, far, e);
+        picture_to_pixel(f, far, e);
         /* Clip the ray to the plot so it does not run over the margins. */
         for (t = 0.0; t <= 1.0; t += 0.0005) {
             const double x = s[0] + t * (e[0] - s[0]), y = s[1] + t * (e[1] - s[1]);
@@ -153,7 +115,7 @@ static void draw_sensor(frame *f, const picture_input *in) {
     canvas_text(&f->c, (int)s[0] - 20, (int)s[1] - 22, "CAMERA", kSensor, 2);
 }
 
-static void draw_axes(frame *f) {
+static void draw_axes(picture_frame *f) {
     const picture_view *v = f->view;
     const int x0 = MARGIN_LEFT, y0 = MARGIN_TOP, x1 = MARGIN_LEFT + f->plot_w, y1 = MARGIN_TOP + f->plot_h;
     double m;
@@ -178,37 +140,58 @@ static void draw_axes(frame *f) {
 }
 
 /* One legend entry: a swatch and a label; returns the next x. */
-static int legend_entry(frame *f, int x, int y, colour fill, double alpha, colour edge, const char *label) {
+static int legend_entry(picture_frame *f, int x, int y, colour fill, double alpha, colour edge, int collides, const char *label) {
+    int px, py;
     canvas_fill_rect(&f->c, x, y, x + 22, y + 14, fill, alpha);
-    canvas_rect_outline(&f->c, x, y, x + 22, y + 14, edge, 2);
+    for (py = y; py <= y + 14; ++py)
+        for (px = x; px <= x + 22; ++px)
+            if (px < x + 2 || px > x + 20 || py < y + 2 || py > y + 12)
+                canvas_pixel(&f->c, px, py, picture_outline_colour(edge, collides, px, py), 1.0);
     return x + 30 + canvas_text(&f->c, x + 30, y, label, kText, 2) + 24;
 }
 
-static void draw_legend(frame *f, const picture_input *in) {
+/* The tool path's entry: a line through dots. */
+static int legend_path_entry(picture_frame *f, int x, int y, const char *label) {
+    canvas_line(&f->c, x, y + 7, x + 22, y + 7, kText, 1.0);
+    canvas_fill_disc(&f->c, x + 4.5, y + 7.5, 2.5, kText, 1.0);
+    canvas_fill_disc(&f->c, x + 18.5, y + 7.5, 2.5, kCollision, 1.0);
+    return x + 30 + canvas_text(&f->c, x + 30, y, label, kText, 2) + 24;
+}
+
+static void draw_legend(picture_frame *f, const picture_input *in) {
     int x = MARGIN_LEFT, y = MARGIN_TOP + f->plot_h + 32, i;
     char label[96];
-    x = legend_entry(f, x, y, kOccupied, 1.0, kOccupied, "OCCUPIED");
-    x = legend_entry(f, x, y, kFree, 1.0, kText, "FREE");
-    x = legend_entry(f, x, y, kUnknown, 1.0, kUnknown, "UNKNOWN (NEVER SEEN)");
-    legend_entry(f, x, y, kCollision, 1.0, kCollision, "CELLS THE ARM HITS");
+    x = legend_entry(f, x, y, kOccupied, 1.0, kOccupied, 0, "OCCUPIED");
+    x = legend_entry(f, x, y, kFree, 1.0, kText, 0, "FREE");
+    x = legend_entry(f, x, y, kUnknown, 1.0, kUnknown, 0, "UNKNOWN (NEVER SEEN)");
+    legend_entry(f, x, y, kCollision, 1.0, kCollision, 0, "CELLS THE ARM HITS");
     y += 24;
     snprintf(label, sizeof label, "UNKNOWN SPACE THE PATH SWEEPS: COSTLIEST BOXES (TOTAL %.3g M^3)", in->total_cost);
-    legend_entry(f, MARGIN_LEFT, y, kCost, 0.35, kCost, label);
+    legend_entry(f, MARGIN_LEFT, y, kCost, 0.35, kCost, 0, label);
+    x = MARGIN_LEFT;
+    y += 24;
+    if (in->body != NULL)
+        x = legend_entry(f, x, y, kBody, BODY_ALPHA, kBodyEdge, 0, in->body_label ? in->body_label : "ROBOT BODY (STILL)");
+    if (in->tool_path_count > 0) {
+        snprintf(label, sizeof label, "%s PATH, A DOT A WAYPOINT (RED: COLLIDES)", in->tool_label ? in->tool_label : "TOOL");
+        legend_path_entry(f, x, y, label);
+    }
     x = MARGIN_LEFT;
     y += 24;
     for (i = 0; i < in->arm_count; ++i)
-        x = legend_entry(f, x, y, kArmColours[i], 0.3, in->arm_collides[i] ? kCollision : kArmColours[i], in->arm_labels[i]);
+        x = legend_entry(f, x, y, kArmColours[i], ARM_ALPHA, kArmColours[i], in->arm_collides[i], in->arm_labels[i]);
     y += 24;
-    canvas_text(&f->c, MARGIN_LEFT, y, "ROBOT OUTLINED RED: THAT WAYPOINT COLLIDES.  DOTTED BLUE: CAMERA FIELD OF VIEW.", kText, 2);
+    canvas_text(&f->c, MARGIN_LEFT, y, "RED-DASHED OUTLINE: THAT WAYPOINT COLLIDES.  DOTTED BLUE: CAMERA FIELD OF VIEW.",
+                kText, 2);
 }
 
-static void draw_notes(frame *f, const picture_input *in) {
+static void draw_notes(picture_frame *f, const picture_input *in) {
     int i;
     for (i = 0; i < in->note_count; ++i) {
         double p[2];
         const int w = canvas_text_width(in->notes[i], 2);
         int x, y;
-        to_pixel(f, in->note_at[i], p);
+        picture_to_pixel(f, in->note_at[i], p);
         x = (int)p[0] - w / 2;
         y = (int)p[1] - 7;
         canvas_fill_rect(&f->c, x - 3, y - 3, x + w + 1, y + 16, kFree, 0.75);
@@ -216,7 +199,7 @@ static void draw_notes(frame *f, const picture_input *in) {
     }
 }
 
-static void draw_scale_bar(frame *f) {
+static void draw_scale_bar(picture_frame *f) {
     const int len = (int)floor(f->view->pixels_per_metre + 0.5);
     const int x = MARGIN_LEFT + 24, y = MARGIN_TOP + 16;
     canvas_fill_rect(&f->c, x - 8, y - 6, x + len + 8, y + 28, kFree, 0.85);
@@ -226,20 +209,28 @@ static void draw_scale_bar(frame *f) {
     canvas_text(&f->c, x + len / 2 - canvas_text_width("1 M", 2) / 2, y + 10, "1 M", kText, 2);
 }
 
+/* Wide enough for the plot, the title and the legend. */
+static uint32_t picture_width(const picture_input *in, int plot_w) {
+    int width = MARGIN_LEFT + plot_w + MARGIN_RIGHT;
+    const int title = MARGIN_LEFT + 80 + canvas_text_width(in->view.title, 2) + 16;
+    if (width < title) width = title;
+    if (width < MARGIN_LEFT + LEGEND_WIDTH) width = MARGIN_LEFT + LEGEND_WIDTH;
+    return (uint32_t)width;
+}
+
 int demo_picture_write(const picture_input *in, const char *path) {
-    frame f;
-    int i, status;
+    picture_frame f;
+    int status;
     f.view = &in->view;
     f.plot_w = (int)ceil((in->view.u_max - in->view.u_min) * in->view.pixels_per_metre);
     f.plot_h = (int)ceil((in->view.v_max - in->view.v_min) * in->view.pixels_per_metre);
-    if (canvas_create(&f.c, (uint32_t)(MARGIN_LEFT + f.plot_w + MARGIN_RIGHT),
-                      (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT)) != 0)
+    if (canvas_create(&f.c, picture_width(in, f.plot_w), (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT)) != 0)
         return -1;
     draw_slice(&f, in->map);
     draw_cost_boxes(&f, in);
-    if (in->body != NULL) draw_arm(&f, in->body, kBody, 0);
-    for (i = 0; i < in->arm_count; ++i) draw_arm(&f, in->arms[i], kArmColours[i], in->arm_collides[i]);
+    picture_draw_robot(&f, in);
     draw_collisions(&f, in);
+    picture_draw_tool_path(&f, in);
     draw_sensor(&f, in);
     draw_notes(&f, in);
     /* Margins are painted last so nothing drawn in map space spills over. */

@@ -32,13 +32,23 @@ typedef struct picture_input {
     double sensor[3];
     double fov_edges[2][3];
     int fov_edge_count;
-    /* The robot's parts that do not move (may be NULL), drawn in grey. */
+    /* The robot's parts that do not move (may be NULL), drawn in a colour
+     * of their own, and their legend label (NULL: "ROBOT BODY (STILL)"). */
     const mesh_out *body;
+    const char *body_label;
     /* Robot silhouettes (map-frame triangles) and their labels. */
     const mesh_out *arms[PICTURE_MAX_ARMS];
     const char *arm_labels[PICTURE_MAX_ARMS];
     int arm_collides[PICTURE_MAX_ARMS];
     int arm_count;
+    /* The tool's path (optional): its map-frame position at each of
+     * tool_path_count waypoints (3 each), tool_collides[w] nonzero where
+     * waypoint w collides, the waypoint each arm shows, a legend label. */
+    const double *tool_path;
+    const unsigned char *tool_collides;
+    size_t tool_path_count;
+    size_t arm_waypoints[PICTURE_MAX_ARMS];
+    const char *tool_label;
     /* Cells hit at colliding waypoints: centres (3 each) and edges. */
     const double *colliding_centers;
     const double *colliding_sizes;

@@ -30,6 +30,12 @@ static const char *const kArmJoints[7] = {"r_shoulder_pan_joint", "r_shoulder_li
 /* MoveIt's pr2.srdf "tuck_right_arm", then the arm stretched forward. */
 static const double kTucked[7] = {-0.023593, 1.10728, -1.55669, -2.12441, -1.4175, -1.8417, 0.21436};
 static const double kReach[7] = {-0.1, 0.1, 0.0, -0.35, 0.0, -0.4, 0.0};
+/* The joints that stay still: the head tilted, the left arm (not checked)
+ * in MoveIt's pr2.srdf "tuck_left_arm", out of the way. */
+static const char *const kStillJoints[8] = {"head_tilt_joint",      "l_shoulder_pan_joint", "l_shoulder_lift_joint",
+                                            "l_upper_arm_roll_joint", "l_elbow_flex_joint",  "l_forearm_roll_joint",
+                                            "l_wrist_flex_joint",   "l_wrist_roll_joint"};
+static const double kStillPositions[8] = {HEAD_TILT, 0.06024, 1.24853, 1.78907, -1.68339, -1.73434, -0.0962141, -0.0864407};
 
 /* The right arm: shoulder to gripper (not r_torso_lift_side_plate_link). */
 static int is_arm_link(const char *name) {
@@ -65,12 +71,11 @@ static int load_pr2(const char *data_dir, opx_linkset **out) {
     return 0;
 }
 
-/* Tilts the head, reads the camera's pose, and leaves only the arm's links on. */
+/* Tilts the head, tucks the left arm, reads the camera's pose, and leaves
+ * only the right arm's links on. */
 static int place_camera_and_links(demo_story *s) {
-    const char *head = "head_tilt_joint";
-    const double tilt = HEAD_TILT;
     uint32_t camera, links = 0, l;
-    if (opx_linkset_set_named_joint_positions(s->robot, &head, &tilt, 1, &s->base_pose) != OPX_OK ||
+    if (opx_linkset_set_named_joint_positions(s->robot, kStillJoints, kStillPositions, 8, &s->base_pose) != OPX_OK ||
         opx_linkset_find_link(s->robot, CAMERA_LINK, &camera) != OPX_OK ||
         opx_linkset_get_pose(s->robot, camera, &s->sensor_pose) != OPX_OK ||
         opx_linkset_get_link_count(s->robot, &links) != OPX_OK) {
@@ -93,11 +98,12 @@ static void side_view(demo_story *s, int quick) {
     v->origin[1] = -0.188; /* the right shoulder's y */
     v->u[0] = 1.0;
     v->v[2] = 1.0;
-    v->u_min = -0.6;
-    v->u_max = 2.4;
-    v->v_min = -0.1;
-    v->v_max = 1.9;
-    v->pixels_per_metre = quick ? 200.0 : 300.0;
+    /* The robot and the camera's wedge of seen space, no more. */
+    v->u_min = -0.5;
+    v->u_max = 2.0;
+    v->v_min = -0.05;
+    v->v_max = 1.6;
+    v->pixels_per_metre = quick ? 240.0 : 400.0;
     v->title = "OCTOPROX DEMO --REAL: PR2 RIGHT ARM, REAL RGB-D FRAME, SLICE Y = -0.19 M";
     v->u_name = "X";
     v->v_name = "Z";
@@ -140,6 +146,9 @@ int demo_real_run(const char *data_dir, const char *out_dir, int quick) {
     }
     s.waypoint_count = quick ? 11 : 41;
     s.is_body_link = is_body_link;
+    s.tool_link = "r_gripper_tool_frame";
+    s.picture.tool_label = "GRIPPER";
+    s.picture.body_label = "PR2 BODY (STILL, NOT CHECKED)";
     side_view(&s, quick);
     s.out_dir = out_dir;
     s.picture_name = "opx-demo-real.png";

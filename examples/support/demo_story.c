@@ -205,12 +205,30 @@ static void robot_mesh(const demo_story *s, const story_state *st, size_t waypoi
     linkset_to_mesh(s->robot, m, groups);
 }
 
+/* The tool link's position at every waypoint and which waypoints collide;
+ * -1 without a tool link, or out of memory (the picture goes without). */
+static int tool_path(const demo_story *s, const story_state *st, double **out, unsigned char **hits) {
+    const size_t n = s->waypoint_count;
+    uint32_t tool;
+    size_t w;
+    if (s->tool_link == NULL || opx_linkset_find_link(s->robot, s->tool_link, &tool) != OPX_OK) return -1;
+    *out = malloc(3 * n * sizeof **out);
+    *hits = malloc(n);
+    if (*out == NULL || *hits == NULL) return -1;
+    for (w = 0; w < n; ++w) {
+        memcpy(&(*out)[3 * w], st->poses[w * st->link_count + tool].position, 3 * sizeof **out);
+        (*hits)[w] = st->results[w].collided[0] != 0;
+    }
+    return 0;
+}
+
 static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
     static mesh_out arms[PICTURE_MAX_ARMS], body;
     static char labels[PICTURE_MAX_ARMS][32];
     uint32_t *groups = malloc((st->link_count + 1) * sizeof *groups);
     size_t picked[5], count = pick_waypoints(s, st, picked), i, w;
-    double *centers = NULL, *sizes = NULL;
+    double *centers = NULL, *sizes = NULL, *tool = NULL;
+    unsigned char *tool_hits = NULL;
     size_t cells = 0;
     int status;
     picture_input *p = &s->picture;
@@ -230,8 +248,14 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
         p->arms[i] = &arms[i];
         p->arm_labels[i] = labels[i];
         p->arm_collides[i] = st->results[picked[i]].collided[0];
+        p->arm_waypoints[i] = picked[i];
     }
     p->arm_count = (int)i;
+    if (tool_path(s, st, &tool, &tool_hits) == 0) {
+        p->tool_path = tool;
+        p->tool_collides = tool_hits;
+        p->tool_path_count = s->waypoint_count;
+    }
     p->map = st->map;
     p->colliding_centers = centers;
     p->colliding_sizes = sizes;
@@ -246,6 +270,11 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
     free(groups);
     free(centers);
     free(sizes);
+    free(tool);
+    free(tool_hits);
+    p->tool_path = NULL;
+    p->tool_collides = NULL;
+    p->tool_path_count = 0;
     return status;
 }
 

@@ -30,9 +30,11 @@ typedef struct demo_story {
     double start[STORY_MAX_JOINTS], goal[STORY_MAX_JOINTS];
     size_t joint_count;
     size_t waypoint_count;
-    /* Links that do not move along the path (drawn once, in grey); NULL:
+    /* Links that do not move along the path (drawn once); NULL:
      * every link moves. */
     int (*is_body_link)(const char *name);
+    /* The link whose path the picture draws, a dot a waypoint (NULL: none). */
+    const char *tool_link;
     /* What the picture shows (map is filled in by the story). */
     picture_input picture;
     const char *out_dir, *picture_name, *map_name;
