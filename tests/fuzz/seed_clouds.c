@@ -1,5 +1,8 @@
-/* PCD and PLY seeds: a few points in each storage the readers support. */
+/* PCD and PLY seeds: a few points in each storage the readers support
+ * (PCD binary_compressed written with liblzf). */
 #include "seeds.h"
+
+#include <lzf.h>
 
 #include <stdint.h>
 #include <stdio.h>
@@ -53,6 +56,38 @@ static const char PCD_ORGANIZED[] =
     "WIDTH 2\nHEIGHT 2\nVIEWPOINT 1 2 3 1 0 0 0\nPOINTS 4\nDATA ascii\n"
     "4278190335 1 2 3\n0 4 5 6\n0 7 8 9\n0 nan 1 1\n";
 
+/* DATA binary_compressed as PCL writes it: the LZF block's size, the size
+ * it decompresses to (uint32 each, little-endian as on the machines the
+ * fuzzers run on), then the block of the fields one after another. */
+static void append_compressed(seed_buffer *buffer, const void *fields, unsigned int size) {
+    unsigned char block[1024];
+    const unsigned int packed = lzf_compress(fields, size, block, sizeof block);
+    const uint32_t sizes[2] = {packed, size};
+    append(buffer, sizes, sizeof sizes);
+    append(buffer, block, packed);
+}
+
+/* Sixteen points of x y z and an intensity, repeating enough for LZF's
+ * back references; and four points of float64 x y z behind an rgb. */
+static void write_compressed_seeds(const char *out_dir) {
+    float xyzi[4][16];
+    double rgb_xyz[2 + 3 * SEED_POINTS];
+    seed_buffer repeated = {{0}, 0}, doubles = {{0}, 0};
+    for (int i = 0; i < 16; ++i)
+        for (int field = 0; field < 4; ++field) xyzi[field][i] = field < 3 ? cloud[i % SEED_POINTS][field] : 1.0f;
+    append_text(&repeated, "VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\n"
+                           "WIDTH 8\nHEIGHT 2\nVIEWPOINT 0 0 0 0 1 0 0\nPOINTS 16\nDATA binary_compressed\n");
+    append_compressed(&repeated, xyzi, sizeof xyzi);
+    write_seed(out_dir, "fuzz_pcd", "compressed.pcd", repeated.bytes, repeated.size);
+    memset(rgb_xyz, 0, sizeof rgb_xyz); /* the rgb field: 4 x 4 bytes, the first 2 doubles */
+    for (int axis = 0; axis < 3; ++axis)
+        for (int i = 0; i < SEED_POINTS; ++i) rgb_xyz[2 + axis * SEED_POINTS + i] = cloud[i][axis];
+    append_text(&doubles, "VERSION 0.7\nFIELDS rgb x y z\nSIZE 4 8 8 8\nTYPE U F F F\nCOUNT 1 1 1 1\n"
+                          "WIDTH 2\nHEIGHT 2\nPOINTS 4\nDATA binary_compressed\n");
+    append_compressed(&doubles, rgb_xyz, sizeof rgb_xyz);
+    write_seed(out_dir, "fuzz_pcd", "compressed_doubles.pcd", doubles.bytes, doubles.size);
+}
+
 void write_pcd_seeds(const char *out_dir) {
     write_text_seed(out_dir, "fuzz_pcd", "ascii.pcd", PCD_ASCII);
     write_text_seed(out_dir, "fuzz_pcd", "organized_rgb.pcd", PCD_ORGANIZED);
@@ -66,9 +101,7 @@ void write_pcd_seeds(const char *out_dir) {
                           "WIDTH 4\nHEIGHT 1\nPOINTS 4\nDATA binary\n");
     append_records(&doubles, 1, 0);
     write_seed(out_dir, "fuzz_pcd", "binary_double.pcd", doubles.bytes, doubles.size);
-    write_text_seed(out_dir, "fuzz_pcd", "compressed.pcd",
-                    "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
-                    "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binary_compressed\n");
+    write_compressed_seeds(out_dir);
 }
 
 static const char PLY_ASCII[] =
