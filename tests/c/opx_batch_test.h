@@ -71,6 +71,15 @@ static inline opx_linkset *load_arm(void) {
     return arm;
 }
 
+/* Disables the pairs that touch at every configuration, as an SRDF
+ * does: each link and the next, the hand's links among themselves. */
+static inline void disable_adjacent_arm_pairs(opx_linkset *arm) {
+    for (uint32_t k = 1; k <= ARM_REVOLUTE; ++k) assert_ok(opx_linkset_set_pair_enabled(arm, k - 1, k, 0));
+    const uint32_t hand[4] = {7, 8, 9, 10}; /* l7, finger_l, finger_r, tool */
+    for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) assert_ok(opx_linkset_set_pair_enabled(arm, hand[a], hand[b], 0));
+}
+
 /* ---- Seeded random numbers (the test's own, portable) ----------------- */
 
 static inline double next_uniform(uint64_t *state, double lo, double hi) {
@@ -128,6 +137,25 @@ static inline int single_collides(opx_query *query, const opx_octree *tree, opx_
                                   const double *q, const opx_pose *base) {
     assert_ok(opx_linkset_set_joint_positions(robot, q, ARM_JOINTS, base));
     return collide_with(query, tree, robot, 0).collided;
+}
+
+/* The same with self-collision: the map, then the arm itself. */
+static inline int single_collides_or_self(opx_query *query, const opx_octree *tree, opx_linkset *robot,
+                                          const double *q, const opx_pose *base) {
+    if (single_collides(query, tree, robot, q, base)) return 1;
+    opx_self_collision_request request = OPX_SELF_COLLISION_REQUEST_INIT;
+    request.max_contacts = 0;
+    opx_self_collision_result result = OPX_SELF_COLLISION_RESULT_INIT;
+    assert_ok(opx_query_self_collide(query, robot, &request, &result));
+    return result.collided;
+}
+
+static inline double single_self_distance(opx_query *query, const opx_linkset *robot, double cutoff) {
+    opx_self_distance_request request = OPX_SELF_DISTANCE_REQUEST_INIT;
+    request.cutoff = cutoff;
+    opx_self_distance_result result = OPX_SELF_DISTANCE_RESULT_INIT;
+    assert_ok(opx_query_self_distance(query, robot, &request, &result));
+    return result.distance;
 }
 
 static inline double single_distance(opx_query *query, const opx_octree *tree, opx_linkset *robot,

@@ -1,7 +1,8 @@
 /*
  * opx_query_check_configurations on the generated arm: the answers equal
  * the single calls (FK on the link set, then opx_query_collide or
- * opx_query_distance) for 1, 2 and 3 threads and both engines, with one
+ * opx_query_distance, and opx_query_self_collide or _self_distance with
+ * self_collision) for 1, 2 and 3 threads and both engines, with one
  * root pose or one per row, packed or strided rows; the caller's link set
  * does not move; two threads may check one link set at once.
  */
@@ -17,12 +18,26 @@ typedef struct batch_case {
     uint32_t threads;
     int distance;
     double cutoff;
+    int self;
 } batch_case;
+
+/* The single calls' answer for row q: collided, and with distance the
+ * nearer of the map's and (with self) the arm's own. */
+static int expected_answer(const batch_case *c, opx_query *single, const opx_octree *tree, opx_linkset *arm,
+                           const double *q, const opx_pose *base, double *distance) {
+    const int collided = c->self ? single_collides_or_self(single, tree, arm, q, base)
+                                 : single_collides(single, tree, arm, q, base);
+    if (!c->distance) return collided;
+    *distance = single_distance(single, tree, arm, q, base, c->cutoff);
+    if (c->self) *distance = fmin(*distance, single_self_distance(single, arm, c->cutoff));
+    return collided;
+}
 
 /* Runs the batch (rows packed, one root pose `base` or none) and checks
  * every answer against the single calls. */
 static void check_case(const batch_case *c, const opx_pose *base) {
     opx_linkset *arm = load_arm();
+    disable_adjacent_arm_pairs(arm);
     opx_octree *tree = new_scatter_map(7);
     double *rows = random_arm_rows(ROWS, 11);
     opx_pose before[ARM_LINKS];
@@ -32,6 +47,7 @@ static void check_case(const batch_case *c, const opx_pose *base) {
     request.max_threads = c->threads;
     request.compute_distance = c->distance;
     request.distance_cutoff = c->cutoff;
+    request.self_collision = c->self;
     uint8_t collided[ROWS];
     double distances[ROWS];
     assert_ok(opx_query_check_configurations(query, tree, arm, rows, ROWS, ARM_JOINTS, 0, base,
@@ -40,10 +56,10 @@ static void check_case(const batch_case *c, const opx_pose *base) {
     opx_query *single = new_query();
     int hits = 0;
     for (size_t i = 0; i < ROWS; ++i) {
-        const double *q = rows + i * ARM_JOINTS;
-        assert_int_equal(collided[i], single_collides(single, tree, arm, q, base));
+        double distance = 0.0;
+        assert_int_equal(collided[i], expected_answer(c, single, tree, arm, rows + i * ARM_JOINTS, base, &distance));
         hits += collided[i];
-        if (c->distance) assert_true(distances[i] == single_distance(single, tree, arm, q, base, c->cutoff));
+        if (c->distance) assert_true(distances[i] == distance);
     }
     assert_true(hits > ROWS / 10 && hits < ROWS * 9 / 10); /* the map is neither empty nor full */
     opx_query_destroy(single);
@@ -58,10 +74,12 @@ static void equals_single_calls_every_thread_count(void **state) {
     const int32_t engines[2] = {OPX_ENGINE_DIRECT, OPX_ENGINE_AMORTIZED};
     for (int e = 0; e < 2; ++e) {
         for (uint32_t threads = 1; threads <= 3; ++threads) {
-            const batch_case collide = {engines[e], threads, 0, 0.0};
-            check_case(&collide, NULL);
-            const batch_case distance = {engines[e], threads, 1, 0.0};
-            check_case(&distance, NULL);
+            for (int self = 0; self <= 1; ++self) {
+                const batch_case collide = {engines[e], threads, 0, 0.0, self};
+                check_case(&collide, NULL);
+                const batch_case distance = {engines[e], threads, 1, 0.0, self};
+                check_case(&distance, NULL);
+            }
         }
     }
 }
@@ -71,7 +89,7 @@ static void distance_cutoff_and_shared_base_pose(void **state) {
     opx_pose base = pose_at(0.1, -0.2, 0.05);
     base.orientation[2] = sin(0.3), base.orientation[3] = cos(0.3);
     for (uint32_t threads = 1; threads <= 3; ++threads) {
-        const batch_case c = {OPX_ENGINE_DIRECT, threads, 1, 0.15};
+        const batch_case c = {OPX_ENGINE_DIRECT, threads, 1, 0.15, 1};
         check_case(&c, &base);
     }
 }
@@ -177,6 +195,34 @@ static void a_changed_link_set_is_seen(void **state) {
     opx_linkset_destroy(arm);
 }
 
+/* The arm folds onto itself in some configurations free of the map: the
+ * self check adds them, and only them. */
+static void self_collision_adds_configurations(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    disable_adjacent_arm_pairs(arm);
+    opx_octree *tree = new_scatter_map(7);
+    double *rows = random_arm_rows(ROWS, 13);
+    opx_query *query = new_query();
+    opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+    uint8_t world[ROWS], both[ROWS];
+    assert_ok(opx_query_check_configurations(query, tree, arm, rows, ROWS, ARM_JOINTS, 0, NULL, 0, 0, &request,
+                                             world, NULL, ROWS));
+    request.self_collision = 1;
+    assert_ok(opx_query_check_configurations(query, tree, arm, rows, ROWS, ARM_JOINTS, 0, NULL, 0, 0, &request,
+                                             both, NULL, ROWS));
+    int added = 0;
+    for (size_t i = 0; i < ROWS; ++i) {
+        assert_true(both[i] >= world[i]);
+        added += both[i] > world[i];
+    }
+    assert_true(added > 0);
+    opx_query_destroy(query);
+    free(rows);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(equals_single_calls_every_thread_count),
@@ -184,6 +230,7 @@ int main(void) {
         cmocka_unit_test(strided_rows_and_a_base_pose_per_row),
         cmocka_unit_test(two_threads_share_one_link_set),
         cmocka_unit_test(a_changed_link_set_is_seen),
+        cmocka_unit_test(self_collision_adds_configurations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,7 +3,8 @@
  * the first colliding configuration equals a brute-force walk over the
  * same samples with single calls (FK, then opx_query_collide); the batch
  * equals the single motion call for 1, 2 and 3 threads and both engines;
- * the swept cost equals opx_query_path over the samples' link poses.
+ * the swept cost equals opx_query_path over the samples' link poses; with
+ * self_collision, the first sample touching the map or the arm itself.
  */
 #include "opx_batch_test.h"
 
@@ -25,23 +26,25 @@ static void sample(const double *a, const double *b, uint64_t i, uint64_t n, dou
 
 /* The first colliding sample by walking them all in order; -1: none. */
 static int64_t brute_force_first(opx_query *query, const opx_octree *tree, opx_linkset *arm, const double *a,
-                                 const double *b, uint64_t n) {
+                                 const double *b, uint64_t n, int self) {
     double q[ARM_JOINTS];
     for (uint64_t i = 0; i <= n; ++i) {
         sample(a, b, i, n, q);
-        if (single_collides(query, tree, arm, q, NULL)) return (int64_t)i;
+        if (self ? single_collides_or_self(query, tree, arm, q, NULL) : single_collides(query, tree, arm, q, NULL))
+            return (int64_t)i;
     }
     return -1;
 }
 
-static void first_collision_equals_brute_force(void **state) {
-    (void)state;
+static void check_against_brute_force(int self) {
     opx_linkset *arm = load_arm();
+    disable_adjacent_arm_pairs(arm);
     opx_octree *tree = new_scatter_map(7);
     double *ends = random_arm_rows(2 * MOTIONS, 31);
     opx_query *query = new_query(), *single = new_query();
     opx_motion_request request = OPX_MOTION_REQUEST_INIT;
     request.resolution = RESOLUTION;
+    request.self_collision = self;
     int colliding = 0, free_motions = 0;
     for (size_t m = 0; m < MOTIONS; ++m) {
         const double *a = ends + 2 * m * ARM_JOINTS, *b = a + ARM_JOINTS;
@@ -49,7 +52,7 @@ static void first_collision_equals_brute_force(void **state) {
         assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &request, &result));
         const uint64_t n = expected_steps(a, b, RESOLUTION);
         assert_int_equal(result.steps, n);
-        const int64_t first = brute_force_first(single, tree, arm, a, b, n);
+        const int64_t first = brute_force_first(single, tree, arm, a, b, n, self);
         assert_int_equal(result.collided, first >= 0);
         assert_true(result.first_collision_fraction == (first < 0 ? -1.0 : (double)first / (double)n));
         assert_true(result.configurations_checked <= n + 1);
@@ -62,6 +65,12 @@ static void first_collision_equals_brute_force(void **state) {
     free(ends);
     opx_octree_destroy(tree);
     opx_linkset_destroy(arm);
+}
+
+static void first_collision_equals_brute_force(void **state) {
+    (void)state;
+    check_against_brute_force(0);
+    check_against_brute_force(1);
 }
 
 /* Short motions from a configuration to a nearby one, so that some are free. */
@@ -85,10 +94,14 @@ static void batch_equals_single_motion_calls(void **state) {
     request.resolution = RESOLUTION;
     opx_query *single = new_query();
     const int32_t engines[2] = {OPX_ENGINE_DIRECT, OPX_ENGINE_AMORTIZED};
-    for (int e = 0; e < 2; ++e) {
-        for (uint32_t threads = 1; threads <= 3; ++threads) {
+    disable_adjacent_arm_pairs(arm);
+    for (int k = 0; k < 12; ++k) { /* engines x 1-3 threads x self-collision off and on */
+        const int e = k % 2, self = k / 6;
+        const uint32_t threads = 1 + (k / 2) % 3;
+        {
             opx_query *query = new_query_with(engines[e]);
             request.max_threads = threads;
+            request.self_collision = self;
             uint8_t collided[MOTIONS];
             double fractions[MOTIONS];
             assert_ok(opx_query_check_motions(query, tree, arm, ends, ends + ARM_JOINTS, MOTIONS, ARM_JOINTS, stride,
@@ -127,6 +140,7 @@ static void swept_cost_equals_the_path_query(void **state) {
     (void)state;
     opx_linkset *arm = load_arm();
     opx_octree *tree = new_scatter_map(7);
+    disable_adjacent_arm_pairs(arm);
     double *ends = nearby_motions(6, 51);
     opx_query *query = new_query(), *path = new_query();
     opx_motion_request request = OPX_MOTION_REQUEST_INIT;
@@ -139,6 +153,13 @@ static void swept_cost_equals_the_path_query(void **state) {
         opx_motion_result result = OPX_MOTION_RESULT_INIT;
         assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &request, &result));
         const uint64_t n = result.steps;
+        /* With self-collision: the first sample colliding with either. */
+        opx_motion_request self_request = request;
+        self_request.self_collision = 1;
+        opx_motion_result self_result = OPX_MOTION_RESULT_INIT;
+        assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &self_request, &self_result));
+        const int64_t self_first = brute_force_first(path, tree, arm, a, b, n, 1);
+        assert_true(self_result.first_collision_fraction == (self_first < 0 ? -1.0 : (double)self_first / (double)n));
         opx_pose *poses = sample_poses(arm, a, b, n);
         opx_path_result expected = OPX_PATH_RESULT_INIT;
         assert_ok(opx_query_path(path, tree, arm, poses, n + 1, 0, 0, &path_request, &expected));

@@ -1,17 +1,19 @@
 // real_batch_pr2: opx_query_check_configurations and _check_motions on the
-// PR2 of the shared data (all 95 links, its meshes) equal the single calls
-// (FK on the link set, then opx_query_collide / opx_query_distance) at
+// PR2 of the shared data (all 95 links, its meshes, the full SRDF) equal
+// the single calls (FK on the link set, then opx_query_collide /
+// opx_query_distance, and _self_collide / _self_distance) at
 // random configurations within the URDF limits, for 1, 2 and 3 threads,
 // against scattered occupied cells at 2 cm around the robot.
 #include "real_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
 namespace {
 
-std::string g_urdf_path, g_package_entry;
+std::string g_urdf_path, g_srdf_path, g_package_entry;
 constexpr size_t kRows = 150;
 
 opx_linkset *load_pr2() {
@@ -19,6 +21,7 @@ opx_linkset *load_pr2() {
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
     options.package_dirs = dirs;
     options.package_dir_count = 1;
+    options.srdf_path = g_srdf_path.c_str();
     opx_linkset *robot = nullptr;
     real::check_ok(opx_linkset_load_urdf_file(g_urdf_path.c_str(), &options, &robot), "opx_linkset_load_urdf_file");
     return robot;
@@ -89,7 +92,38 @@ struct Single {
         real::check_ok(opx_query_distance(query, tree, robot, nullptr, &result), "opx_query_distance");
         return result.distance;
     }
+    // At the pose of the last move.
+    int self_collides() const {
+        opx_self_collision_request request = OPX_SELF_COLLISION_REQUEST_INIT;
+        request.max_contacts = 0;
+        opx_self_collision_result result = OPX_SELF_COLLISION_RESULT_INIT;
+        real::check_ok(opx_query_self_collide(query, robot, &request, &result), "opx_query_self_collide");
+        return result.collided;
+    }
+    double self_distance() const {
+        opx_self_distance_result result = OPX_SELF_DISTANCE_RESULT_INIT;
+        real::check_ok(opx_query_self_distance(query, robot, nullptr, &result), "opx_query_self_distance");
+        return result.distance;
+    }
 };
+
+// What the single calls answer for every row, without and with self.
+struct Expected {
+    std::vector<int> world, both;
+    std::vector<double> world_distance, both_distance;
+};
+
+Expected single_answers(const Single &single, const std::vector<double> &rows, size_t joints) {
+    Expected e;
+    for (size_t i = 0; i < kRows; ++i) {
+        const double *q = &rows[i * joints];
+        e.world_distance.push_back(single.distance(q));
+        e.both_distance.push_back(std::min(e.world_distance.back(), single.self_distance()));
+        e.world.push_back(single.collides(q));
+        e.both.push_back(e.world.back() || single.self_collides());
+    }
+    return e;
+}
 
 void test_configurations_equal_single_calls(void **) {
     opx_linkset *robot = load_pr2();
@@ -99,23 +133,23 @@ void test_configurations_equal_single_calls(void **) {
     opx_query *single_query = nullptr;
     real::check_ok(opx_query_create(nullptr, &single_query), "opx_query_create");
     const Single single{single_query, tree, robot};
-    std::vector<int> expected(kRows);
-    std::vector<double> expected_distance(kRows);
-    for (size_t i = 0; i < kRows; ++i) {
-        expected[i] = single.collides(&rows[i * joints]);
-        expected_distance[i] = single.distance(&rows[i * joints]);
-    }
-    size_t hits = 0;
-    for (int e : expected) hits += static_cast<size_t>(e);
-    std::printf("PR2: %zu of %zu configurations collide\n", hits, kRows);
+    const Expected e = single_answers(single, rows, joints);
+    size_t hits = 0, self_hits = 0;
+    for (size_t i = 0; i < kRows; ++i) hits += size_t(e.world[i]), self_hits += size_t(e.both[i] && !e.world[i]);
+    std::printf("PR2: %zu of %zu configurations collide with the map, %zu more with the robot itself\n", hits, kRows,
+                self_hits);
     assert_true(hits > kRows / 20 && hits < kRows * 19 / 20);
     for (uint32_t threads = 1; threads <= 3; ++threads) {
-        for (int32_t distance = 0; distance <= 1; ++distance) {
+        for (int32_t kind = 0; kind < 4; ++kind) {
+            const int32_t distance = kind & 1, self = kind >> 1;
+            const std::vector<int> &expected = self ? e.both : e.world;
+            const std::vector<double> &expected_distance = self ? e.both_distance : e.world_distance;
             opx_query *query = nullptr;
             real::check_ok(opx_query_create(nullptr, &query), "opx_query_create");
             opx_batch_request request = OPX_BATCH_REQUEST_INIT;
             request.max_threads = threads;
             request.compute_distance = distance;
+            request.self_collision = self;
             std::vector<uint8_t> collided(kRows);
             std::vector<double> distances(kRows);
             real::check_ok(opx_query_check_configurations(query, tree, robot, rows.data(), kRows, joints, 0, nullptr,
@@ -146,6 +180,7 @@ void test_motions_equal_single_motion_calls(void **) {
     real::check_ok(opx_query_create(nullptr, &query), "opx_query_create");
     opx_motion_request request = OPX_MOTION_REQUEST_INIT;
     request.resolution = 0.02;
+    request.self_collision = 1;
     std::vector<int32_t> expected(motions);
     std::vector<double> expected_fraction(motions);
     for (size_t m = 0; m < motions; ++m) {
@@ -176,6 +211,7 @@ void test_motions_equal_single_motion_calls(void **) {
 
 int main() {
     g_urdf_path = real::require_data_file("robots/pr2_description/urdf/robot.xml");
+    g_srdf_path = real::require_data_file("robots/pr2_description/srdf/pr2.srdf");
     g_package_entry = "moveit_resources_pr2_description=" + real::data_dir() + "/robots/pr2_description";
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_configurations_equal_single_calls),

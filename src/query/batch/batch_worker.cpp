@@ -1,6 +1,6 @@
 #include "query/batch/batch_worker.hpp"
 
-#include "base/error.hpp"
+#include <algorithm>
 
 namespace octoprox {
 namespace {
@@ -33,12 +33,17 @@ bool BatchWorker::collides(const SensorOctree &tree, const LinkSet &posed, const
     const CollisionAnswer world = context_.collide(tree, posed, collision);
     narrow_tests_ += world.outcome.narrow_tests;
     if (world.outcome.collided) return true;
-    if (self_collision) throw ApiError(OPX_ERROR_UNSUPPORTED, "self_collision is not available yet");
-    return false;
+    if (!self_collision) return false;
+    SelfCollisionSettings yes_no;
+    yes_no.max_contacts = 0;
+    const SelfCollisionOutcome self = context_.self_collide(posed, yes_no);
+    narrow_tests_ += self.narrow_tests;
+    return self.collided;
 }
 
 // The distance first; the collision test only when the distance leaves
-// touching open.
+// touching open.  With self-collision, the same for the self distance, the
+// answer being the nearer of the two.
 ConfigurationAnswer BatchWorker::with_distance(const SensorOctree &tree, const LinkSet &posed,
                                                const ConfigurationSettings &settings) {
     const DistanceAnswer nearest = context_.distance(tree, posed, settings.distance_settings, false);
@@ -47,8 +52,21 @@ ConfigurationAnswer BatchWorker::with_distance(const SensorOctree &tree, const L
     answer.distance = nearest.outcome.found ? nearest.outcome.distance : settings.distance_settings.cutoff;
     const bool may_touch = nearest.outcome.found && nearest.outcome.distance <= kSurelyApart;
     answer.collided = may_touch && collides(tree, posed, settings.collision, false);
-    if (settings.self_collision) throw ApiError(OPX_ERROR_UNSUPPORTED, "self_collision is not available yet");
+    if (settings.self_collision) add_self_distance(posed, settings, answer);
     return answer;
+}
+
+void BatchWorker::add_self_distance(const LinkSet &posed, const ConfigurationSettings &settings,
+                                    ConfigurationAnswer &answer) {
+    SelfDistanceSettings self;
+    self.cutoff = settings.distance_settings.cutoff;
+    const SelfDistanceOutcome nearest = context_.self_distance(posed, self);
+    narrow_tests_ += nearest.narrow_tests;
+    if (nearest.found) answer.distance = std::min(answer.distance, nearest.distance);
+    if (answer.collided || !nearest.found || nearest.distance > kSurelyApart) return;
+    SelfCollisionSettings yes_no;
+    yes_no.max_contacts = 0;
+    answer.collided = context_.self_collide(posed, yes_no).collided;
 }
 
 void BatchWorkers::prepare(size_t count, const LinkSet &links, const JointTree &joints) {

@@ -36,6 +36,7 @@ private:
                   bool self_collision);
     ConfigurationAnswer with_distance(const SensorOctree &tree, const LinkSet &posed,
                                       const ConfigurationSettings &settings);
+    void add_self_distance(const LinkSet &posed, const ConfigurationSettings &settings, ConfigurationAnswer &answer);
 
     QueryContext context_;
     PosedRobot robot_;

@@ -41,6 +41,22 @@ MotionAnswer first_colliding_sample(uint64_t steps, Collides &&collides) {
     return answer;
 }
 
+// The path query checked the map alone: the samples before its first
+// collision are checked against themselves, in order.
+void first_self_collision(BatchWorker &worker, MotionScratch &scratch, const double *start, const double *goal,
+                          const Pose &base, MotionAnswer &answer) {
+    const uint64_t end = answer.first_sample >= 0 ? uint64_t(answer.first_sample) : answer.steps + 1;
+    SelfCollisionSettings yes_no;
+    yes_no.max_contacts = 0;
+    for (uint64_t i = 0; i < end; ++i) {
+        const LinkSet &posed = worker.robot().pose(sample_at(scratch, start, goal, i, answer.steps), base);
+        if (worker.context().self_collide(posed, yes_no).collided) {
+            answer.first_sample = static_cast<int64_t>(i);
+            return;
+        }
+    }
+}
+
 }  // namespace
 
 double motion_steps(const PosedRobot &robot, MotionScratch &scratch, const double *start, const double *goal,
@@ -72,7 +88,6 @@ MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const Sen
 MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, const SensorOctree &tree,
                                     const LinkSet &links, const double *start, const double *goal, uint64_t steps,
                                     const Pose &base, const MotionSettings &settings) {
-    if (settings.self_collision) throw ApiError(OPX_ERROR_UNSUPPORTED, "self_collision is not available yet");
     MotionScratch scratch;
     scratch.sample.resize(worker.robot().joint_count());
     const size_t link_count = links.link_count();
@@ -90,6 +105,7 @@ MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, 
     answer.samples_checked = steps + 1;
     answer.path = context.path(tree, links, poses, steps + 1, path);
     answer.first_sample = answer.path.first_collision;
+    if (settings.self_collision) first_self_collision(worker, scratch, start, goal, base, answer);
     return answer;
 }
 
