@@ -1,5 +1,6 @@
 #include "frame_report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -60,6 +61,34 @@ const char *const kColumns[kSummaryCount] = {"ingest rc",  "ingest ep", "structu
 const int kOrder[kSummaryCount] = {kIngestRaycast, kIngestEndpoints, kStructure, kPoseUpdate, kCollision,
                                    kPoseAndCollision, kDistance, kTotal, kTotalEndpoints};
 
+// The batch call's time per frame, and the frame's total with it in place
+// of the single calls (ray-cast ingest, structure, batch, distances).
+Spread spread_of(std::vector<double> values) {
+    Spread s;
+    s.median_ms = paper_tables::median(values);
+    s.worst_ms = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+    return s;
+}
+
+Spread batch_spread(const RunResult &run, int p, bool total) {
+    std::vector<double> values;
+    for (size_t f = 0; f < run.batch_ms.size() && f < run.frames.size(); ++f) {
+        const StageTimes &t = run.frames[f][p];
+        values.push_back(run.batch_ms[f][p] +
+                         (total ? t[kIngestRaycast] + t[kStructure] + t[kDistance] : 0.0));
+    }
+    return spread_of(values);
+}
+
+void print_batch(const RunResult &run) {
+    if (run.batch_ms.empty()) return;
+    std::printf("batch (opx_query_check_configurations, every core, forward kinematics included), ms median/worst:");
+    for (int p : {kDirect, kAmortized})
+        std::printf(" %s %s, frame total %s;", kPipelineNames[p], cell(batch_spread(run, p, false)).c_str(),
+                    cell(batch_spread(run, p, true)).c_str());
+    std::printf(" answers %s\n", run.checks.batch_mismatches == 0 ? "equal the single calls'" : "DIFFER");
+}
+
 }  // namespace
 
 RunSpreads summarize(const RunResult &run) {
@@ -94,6 +123,7 @@ void print_run(const RunResult &run) {
         }
         std::printf("\n");
     }
+    print_batch(run);
     const Checks &c = run.checks;
     std::printf("checks: collided flag %s in %lld configuration-frames; distances: direct vs amortized max gap %.1e "
                 "m over %d; FCL octree vs direct: %d of %d differ by more than %.0e m (max %.1e m)%s\n",
@@ -123,6 +153,12 @@ void write_pipeline(std::ostream &out, const RunResult &run, const RunSpreads &s
         write_spread(out, s < kStageCount ? kStageKeys[s] : kSummaryKeys[s - kStageCount], spreads[p][s]);
         out << ", ";
     }
+    if (p != kFcl && !run.batch_ms.empty()) {
+        write_spread(out, "batch_collisions", batch_spread(run, p, false));
+        out << ", ";
+        write_spread(out, "total_batch", batch_spread(run, p, true));
+        out << ", ";
+    }
     out << "\"distance_scaled\": " << (p == kFcl && fcl_distance_scaled(run) ? "true" : "false")
         << ", \"heap_high_water_bytes\": " << run.heap_high[p] << ", ";
     write_tree(out, "tree", tree_of(run, p));
@@ -147,7 +183,7 @@ void write_run(std::ostream &out, const RunResult &run) {
         << ", \"fcl_distance_queries_measured\": " << std::min(run.plan.fcl_distance_queries, run.plan.distance_queries)
         << ", \"colliding_fraction\": " << double(c.collided) / std::max<long long>(1, c.collision_compared)
         << ", \"distance_collision_free\": " << c.distance_free
-        << ", \"collision_mismatches\": " << c.collision_mismatches
+        << ", \"collision_mismatches\": " << c.collision_mismatches << ", \"batch_mismatches\": " << c.batch_mismatches
         << ", \"engines_distance_gap_m\": " << c.engines_distance_gap << ", \"fcl_distance_gap_m\": " << c.fcl_distance_gap
         << ",\n     \"pipelines\": [\n";
     for (int p = 0; p < kPipelineCount; ++p) {

@@ -116,6 +116,35 @@ std::vector<bool> run_collisions(RunState &state, int frame, std::array<StageTim
     return direct_answers;
 }
 
+// The configurations' joint vectors, one row each, for the batch call.
+std::vector<double> joint_rows(const std::vector<Configuration> &set) {
+    std::vector<double> rows;
+    for (const Configuration &c : set) rows.insert(rows.end(), c.joints.begin(), c.joints.end());
+    return rows;
+}
+
+// The same configurations in one batch call per octoprox engine, on every
+// core; its answers must be the single calls'.
+std::array<double, kPipelineCount> run_batch(RunState &state, const std::vector<bool> &direct_answers, Checks &checks) {
+    const std::vector<Configuration> &set = state.robot.configurations;
+    const std::vector<double> rows = joint_rows(set);
+    const size_t joints = set.empty() ? 0 : set[0].joints.size();
+    opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+    request.max_threads = 0;
+    std::vector<uint8_t> collided(set.size());
+    std::array<double, kPipelineCount> ms{};
+    for (const Pipeline p : {kDirect, kAmortized}) {
+        ms[p] = time_once_ms([&] {
+            check_opx(opx_query_check_configurations(engine(state, p), state.opx.raycast(), robot_links(state, p),
+                                                     rows.data(), set.size(), joints, 0, &state.robot.base, 1, 0,
+                                                     &request, collided.data(), nullptr, collided.size()),
+                      "opx_query_check_configurations");
+        });
+        for (size_t c = 0; c < set.size(); ++c) checks.batch_mismatches += (collided[c] != 0) != direct_answers[c];
+    }
+    return ms;
+}
+
 // The first `count` configurations that are collision-free in the first
 // frame (a distance query there computes the full minimum), topped up with
 // colliding ones when too few are free.
@@ -187,7 +216,8 @@ void keep_memory(const RunState &state, RunResult &result) {
 }  // namespace
 
 bool Checks::ok() const {
-    return collision_mismatches == 0 && engines_distance_gap <= kDistanceTolerance && collision_compared > 0;
+    return collision_mismatches == 0 && batch_mismatches == 0 && engines_distance_gap <= kDistanceTolerance &&
+           collision_compared > 0;
 }
 
 RunResult run_frames(Stream &stream, Robot &robot, const RunPlan &plan) {
@@ -202,6 +232,7 @@ RunResult run_frames(Stream &stream, Robot &robot, const RunPlan &plan) {
         ingest(state, times);
         build_structures(state, times);
         const std::vector<bool> collided = run_collisions(state, frame, times, result.checks);
+        if (!state.robot.configurations.empty()) result.batch_ms.push_back(run_batch(state, collided, result.checks));
         if (frame == 0) state.distance_set = choose_distance_set(collided, plan.distance_queries, result.checks);
         run_distances(state, frame, plan, times, result.checks);
         result.frames.push_back(times);

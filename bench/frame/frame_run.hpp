@@ -13,7 +13,9 @@
 //                       it is computed once, untimed) then FCL's octree
 //                       collision / distance against the PR2 (pr2_fcl.hpp)
 // Per configuration the three pipelines take turns (the order rotates), so
-// a change of the machine's load hits them alike.
+// a change of the machine's load hits them alike.  After the single calls,
+// each octoprox engine checks the same 1,000 configurations again in one
+// batch call on every core (opx_query_check_configurations), timed apart.
 #pragma once
 
 #include <string>
@@ -51,6 +53,7 @@ struct Checks {
     int distance_free = 0;             // of the distance configurations, how many are collision-free (frame 0)
     double engines_distance_gap = 0.0; // max |direct - amortized|, m
     double fcl_distance_gap = 0.0;     // max |direct - FCL|, m
+    long long batch_mismatches = 0;    // batch answers that differ from the single calls'
     bool ok() const;
 };
 
@@ -59,6 +62,10 @@ struct RunResult {
     RunPlan plan;
     int configurations = 0;
     std::vector<std::array<StageTimes, kPipelineCount>> frames;  // [frame][pipeline], ms
+    // [frame][pipeline]: the same configurations in one
+    // opx_query_check_configurations call on every core (forward
+    // kinematics included), ms; 0 for FCL, which has no such call.
+    std::vector<std::array<double, kPipelineCount>> batch_ms;
     TreeMemory opx_raycast, opx_endpoints, octomap_raycast, octomap_endpoints;  // after the last frame
     size_t heap_high[kPipelineCount] = {0, 0, 0};  // the ray-cast map + the engine, bytes
     size_t opx_endpoints_heap_high = 0, octomap_endpoints_heap_high = 0;
