@@ -60,6 +60,7 @@ default_from_init! {
     opx_path_result => opx_path_result_init,
     opx_urdf_options => opx_urdf_options_init,
     opx_joint_info => opx_joint_info_init,
+    opx_point_cloud_info => opx_point_cloud_info_init,
 }
 
 impl Default for opx_pose {

@@ -8,6 +8,8 @@
 //!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
 //!   [`Query::path`].
+//! * [`read_point_cloud`]: PCD and PLY files as points (the library's
+//!   readers).
 //!
 //! Units are metres and radians; a [`Pose`] is `position` (x y z) and
 //! `orientation` (qx qy qz qw, ROS order).  Request, option and result
@@ -19,6 +21,7 @@
 //! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
 //! use one per thread.
 
+mod cloud;
 mod depth;
 mod error;
 mod linkset;
@@ -27,6 +30,7 @@ mod points;
 mod query;
 mod robot;
 
+pub use cloud::{read_point_cloud, PointCloud, PointCloudInfo};
 pub use depth::{camera_intrinsics, CameraIntrinsics, DepthImage};
 pub use error::{status_name, Error, Result};
 pub use linkset::{LinkSet, Shape, ShapeKind};
@@ -60,6 +64,8 @@ pub type PathResult = sys::opx_path_result;
 /// `OPX_UNKNOWN_OCCUPIED`, `OPX_ENGINE_AMORTIZED`, `OPX_FORMAT_BT`, ...).
 pub mod consts {
     pub use octoprox_sys::{
+        OPX_CLOUD_ENCODING_ASCII, OPX_CLOUD_ENCODING_BINARY, OPX_CLOUD_ENCODING_BINARY_COMPRESSED,
+        OPX_CLOUD_FORMAT_PCD, OPX_CLOUD_FORMAT_PLY,
         OPX_CELL_FREE, OPX_CELL_OCCUPIED, OPX_CELL_UNCERTAIN, OPX_CELL_UNKNOWN,
         OPX_ENGINE_AMORTIZED, OPX_ENGINE_DIRECT, OPX_ERROR_BUFFER_TOO_SMALL, OPX_ERROR_CORRUPT,
         OPX_ERROR_INTERNAL, OPX_ERROR_INVALID_ARGUMENT, OPX_ERROR_IO, OPX_ERROR_OUT_OF_MEMORY,
