@@ -24,6 +24,9 @@ public:
 
     FclManager &manager() { return *manager_; }
     size_t object_count() const { return objects_.size(); }
+    // Object i (one per shape, in link then shape order) and its link.
+    fcl::CollisionObjectd &object(size_t i) { return *objects_[i]; }
+    uint32_t object_link(size_t i) const { return placements_[i].link; }
 
 private:
     struct Placement {

@@ -1,0 +1,23 @@
+// The rows of opx-bench-batch: printed as a table and written as a JSON
+// list of objects with the fields robot, map, pipeline,
+// us_per_configuration and any row's own (ns_per_sphere, ns_per_call,
+// motions_per_second, ...), each with the CPU.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace batch_bench {
+
+struct Row {
+    std::string robot, map, pipeline;
+    double us_per_configuration = 0.0;
+    std::vector<std::pair<std::string, double>> fields;  // the row's own, in order
+};
+
+void print_rows(const std::vector<Row> &rows);
+bool write_rows_json(const std::string &path, const std::vector<Row> &rows, const std::string &cpu,
+                     const std::string &load);
+
+}  // namespace batch_bench

@@ -1,0 +1,106 @@
+#include "batch_run.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "pipelines.hpp"
+#include "sphere_rows.hpp"
+
+namespace batch_bench {
+namespace {
+
+constexpr uint64_t kSeed = 0xBA7C4u;
+constexpr size_t kMotions = 2000;
+// Self-collision in the OctoProx pipelines (FCL always checks it).
+constexpr bool kSelfCollision = true;
+
+size_t count_of(const std::vector<uint8_t> &flags) { return size_t(std::count(flags.begin(), flags.end(), 1)); }
+
+size_t differences(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b) {
+    size_t n = 0;
+    for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+    return n;
+}
+
+Row row(const Robot &robot, const Scene &scene, const char *pipeline, const Timing &t) {
+    return Row{robot.name, scene.name, pipeline, t.us_per_configuration,
+               {{"configurations", double(t.collided.size())}, {"collided", double(count_of(t.collided))},
+                {"fastest_round_us", t.fastest_us}}};
+}
+
+Row motion_row(const Robot &robot, const Scene &scene, const char *pipeline, const MotionTiming &t) {
+    return Row{robot.name, scene.name, pipeline, t.us_per_configuration,
+               {{"motions", double(t.motions)}, {"collided", double(t.collided)},
+                {"motions_per_second", t.motions_per_second},
+                {"configurations_per_motion", t.configurations_per_motion},
+                {"resolution_rad", kMotionResolution}}};
+}
+
+bool check_agreement(const Robot &robot, const Scene &scene, const Timing &single, const Timing &one,
+                     const Timing &two, const Timing &fcl) {
+    const size_t bad = differences(single.collided, one.collided) + differences(single.collided, two.collided);
+    std::printf("  %s, %s: %zu of %zu collide; batch vs single calls: %s; FCL (world + self) says %zu collide, "
+                "%zu configurations differ from OctoProx%s\n",
+                robot.name.c_str(), scene.name.c_str(), count_of(single.collided), single.collided.size(),
+                bad == 0 ? "the same answers" : "MISMATCH", count_of(fcl.collided),
+                differences(fcl.collided, one.collided), kSelfCollision ? "" : " (world only)");
+    std::fflush(stdout);
+    return bad == 0;
+}
+
+bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const RunOptions &options,
+               std::vector<Row> &rows) {
+    const ConfigurationSet set = draw_configurations(robot, base, options.configurations, kSeed, true);
+    const Workload work{robot, scene, set, kSelfCollision, options.rounds};
+    const Timing single = time_single_calls(work);
+    const Timing one = time_batch(work, 1), two = time_batch(work, 2);
+    FclCheck fcl_check(robot, *scene.fcl_octree);
+    const Timing fcl = time_fcl(Workload{robot, scene, set, true, 1}, fcl_check, true);
+    rows.push_back(row(robot, scene, "single calls", single));
+    rows.push_back(row(robot, scene, "batch 1 thread", one));
+    rows.push_back(row(robot, scene, "batch 2 threads", two));
+    rows.push_back(row(robot, scene, "fcl", fcl));
+    const std::vector<double> goals = motion_goals(set);
+    const size_t motions = std::min(set.count, options.quick ? size_t(20) : kMotions);
+    rows.push_back(motion_row(robot, scene, "motions batch 1 thread", time_motions(work, goals, motions, 1)));
+    rows.push_back(motion_row(robot, scene, "motions batch 2 threads", time_motions(work, goals, motions, 2)));
+    return check_agreement(robot, scene, single, one, two, fcl);
+}
+
+void sphere_rows(Robot &arm, const Scene &scene, const RunOptions &options, std::vector<Row> &rows) {
+    const SphereArmTiming a = time_sphere_arm(arm, scene, options.configurations, options.rounds);
+    rows.push_back(Row{arm.name, scene.name, "batch 1 thread", a.us_per_configuration,
+                       {{"ns_per_sphere", a.ns_per_sphere}, {"configurations", double(a.configurations)},
+                        {"collided", double(a.collided)}}});
+    const SphereCallTiming s = time_single_sphere_calls(scene, options.configurations, options.rounds);
+    rows.push_back(Row{"sphere", scene.name, "single sphere call", s.ns_per_call / 1000.0,
+                       {{"ns_per_call", s.ns_per_call}, {"calls", double(s.calls)}, {"collided", double(s.collided)}}});
+}
+
+void print_scene(const Scene &scene) {
+    std::printf("map %s: %zu occupied cells; PR2 root at (%.2f, %.2f, %.3f), arms at its right shoulder\n",
+                scene.name.c_str(), scene.occupied, scene.robot_base.position[0], scene.robot_base.position[1],
+                scene.robot_base.position[2]);
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+RunResult run_all(const RunOptions &options) {
+    RunResult result;
+    Robot pr2 = load_pr2(), arm = load_primitive_arm(), spheres = load_sphere_arm();
+    std::printf("robots: PR2 (%zu joints, %zu shapes, %zu SRDF pairs disabled), arm 7 (%zu shapes), sphere arm 50; "
+                "%zu configurations each; OctoProx self-collision %s\n",
+                pr2.joints, pr2.shapes, pr2.disabled.size(), arm.shapes, options.configurations,
+                kSelfCollision ? "on" : "off");
+    for (int which = 0; which < 2; ++which) {
+        const Scene scene = which == 0 ? real_scene(pr2.links.get()) : room_scene(pr2.links.get());
+        print_scene(scene);
+        result.agree &= run_robot(pr2, scene, scene.robot_base, options, result.rows);
+        result.agree &= run_robot(arm, scene, scene.arm_base, options, result.rows);
+        if (which == 0) sphere_rows(spheres, scene, options, result.rows);
+    }
+    return result;
+}
+
+}  // namespace batch_bench

@@ -1,0 +1,79 @@
+#include "sphere_rows.hpp"
+
+#include "arm_urdf.hpp"
+#include "pipelines.hpp"
+#include "rng.hpp"
+#include "timing.hpp"
+
+namespace batch_bench {
+namespace {
+
+using paper_tables::check_opx;
+
+constexpr double kSphereRadius = 0.05;
+constexpr uint64_t kSphereSeed = 0x5F11E7u;
+
+std::vector<opx_pose> sphere_poses(const opx_octree *tree, size_t count) {
+    opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
+    check_opx(opx_octree_get_stats(tree, &stats), "opx_octree_get_stats");
+    paper_tables::Rng rng(kSphereSeed);
+    std::vector<opx_pose> poses(count, opx_pose(OPX_POSE_IDENTITY));
+    for (opx_pose &pose : poses)
+        for (int axis = 0; axis < 3; ++axis)
+            pose.position[axis] = rng.uniform(stats.occupied_min[axis], stats.occupied_max[axis]);
+    return poses;
+}
+
+paper_tables::OpxLinksetPtr one_sphere() {
+    opx_linkset *raw = nullptr;
+    check_opx(opx_linkset_create(&raw), "opx_linkset_create");
+    paper_tables::OpxLinksetPtr links(raw);
+    uint32_t link = 0;
+    check_opx(opx_linkset_add_link(raw, "sphere", &link), "opx_linkset_add_link");
+    opx_shape shape = OPX_SHAPE_INIT;
+    shape.kind = OPX_SHAPE_SPHERE;
+    shape.radius = kSphereRadius;
+    check_opx(opx_linkset_add_shape(raw, link, &shape, nullptr), "opx_linkset_add_shape");
+    return links;
+}
+
+}  // namespace
+
+SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, int rounds) {
+    const ConfigurationSet set = draw_configurations(arm, scene.arm_base, count, kSphereSeed, false);
+    const Timing timing = time_batch(Workload{arm, scene, set, false, rounds}, 1);
+    SphereArmTiming out;
+    out.configurations = count;
+    for (uint8_t c : timing.collided) out.collided += c;
+    out.us_per_configuration = timing.us_per_configuration;
+    out.ns_per_sphere = 1000.0 * timing.us_per_configuration / kArmSpheres;
+    return out;
+}
+
+SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds) {
+    const std::vector<opx_pose> poses = sphere_poses(scene.tree.get(), count);
+    const paper_tables::OpxLinksetPtr sphere = one_sphere();
+    const paper_tables::OpxQueryPtr query = paper_tables::make_direct_query();
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    request.max_contacts = 0;
+    SphereCallTiming out;
+    out.calls = count;
+    auto run = [&] {
+        size_t collided = 0;
+        for (const opx_pose &pose : poses) {
+            check_opx(opx_linkset_set_poses(sphere.get(), &pose, 1, 0), "opx_linkset_set_poses");
+            opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+            check_opx(opx_query_collide(query.get(), scene.tree.get(), sphere.get(), &request, &result),
+                      "opx_query_collide");
+            collided += static_cast<size_t>(result.collided);
+        }
+        out.collided = collided;
+    };
+    run();
+    std::vector<double> ns;
+    for (int r = 0; r < rounds; ++r) ns.push_back(1e6 * paper_tables::time_once_ms(run) / double(count));
+    out.ns_per_call = paper_tables::median(ns);
+    return out;
+}
+
+}  // namespace batch_bench

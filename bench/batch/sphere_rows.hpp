@@ -1,0 +1,26 @@
+// The sphere rows of opx-bench-batch: the 50-sphere arm against the real
+// frame at 2 cm through the batch call on one thread (ns per sphere), and
+// one sphere per call (set its pose, then opx_query_collide through the C
+// API: ns per call), the two ways sphere-based planners ask.
+#pragma once
+
+#include "configurations.hpp"
+
+namespace batch_bench {
+
+struct SphereArmTiming {
+    double us_per_configuration = 0.0, ns_per_sphere = 0.0;
+    size_t configurations = 0, collided = 0;
+};
+
+SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, int rounds);
+
+struct SphereCallTiming {
+    double ns_per_call = 0.0;
+    size_t calls = 0, collided = 0;
+};
+
+// Spheres of 5 cm radius uniform in the box of the occupied cells.
+SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds);
+
+}  // namespace batch_bench
