@@ -3,6 +3,7 @@
 #include "base/error.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace octoprox {
 namespace {
@@ -127,20 +128,33 @@ void JointTree::link_poses(const Pose &base, const double *positions, Pose *pose
     poses[root_link_] = base;
     for (uint32_t j : order_) {
         const Joint &joint = joints_[j];
-        const Pose &parent = poses[joint.parent_link];
-        Pose &child = poses[joint.child_link];
-        // child = parent * origin * motion(q)
-        child.rotation = parent.rotation * joint.origin.rotation;
-        child.translation = parent.apply(joint.origin.translation);
-        const double q = positions[j];
-        switch (joint.type) {
-        case JointType::kRevolute:
-        case JointType::kContinuous:
-            child.rotation = child.rotation * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
-            break;
-        case JointType::kPrismatic: child.translation += child.rotation * (q * joint.axis); break;
-        default: break;
-        }
+        compose(joint, poses[joint.parent_link], positions[j], poses[joint.child_link]);
+    }
+}
+
+void JointTree::update_link_poses(const Pose &base, bool base_moved, const double *positions,
+                                  const double *previous, Pose *poses, uint8_t *moved) const {
+    moved[root_link_] = base_moved ? 1 : 0;
+    if (base_moved) poses[root_link_] = base;
+    for (uint32_t j : order_) {
+        const Joint &joint = joints_[j];
+        // Bit for bit: -0.0 and 0.0 may give poses differing in a zero's sign.
+        const bool changed = moved[joint.parent_link] != 0 || std::memcmp(&positions[j], &previous[j], sizeof(double)) != 0;
+        moved[joint.child_link] = changed ? 1 : 0;
+        if (changed) compose(joint, poses[joint.parent_link], positions[j], poses[joint.child_link]);
+    }
+}
+
+void JointTree::compose(const Joint &joint, const Pose &parent, double q, Pose &child) {
+    child.rotation = parent.rotation * joint.origin.rotation;
+    child.translation = parent.apply(joint.origin.translation);
+    switch (joint.type) {
+    case JointType::kRevolute:
+    case JointType::kContinuous:
+        child.rotation = child.rotation * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+        break;
+    case JointType::kPrismatic: child.translation += child.rotation * (q * joint.axis); break;
+    default: break;
     }
 }
 

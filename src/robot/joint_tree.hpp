@@ -68,8 +68,18 @@ public:
     // `positions` hold joint_count() values, `poses` link_count().
     void positions_from(const double *commanded, double *positions) const;
     void link_poses(const Pose &base, const double *positions, Pose *poses) const;
+    // FK again after a change from `previous` positions (and, when
+    // base_moved, a new base): only the links below a joint whose position
+    // changed, or below a link that moved, are recomputed; `poses` holds
+    // the poses at `previous` and gets the new ones, bit for bit as
+    // link_poses computes them.  `moved` (link_count() flags) tells which
+    // links moved.
+    void update_link_poses(const Pose &base, bool base_moved, const double *positions, const double *previous,
+                           Pose *poses, uint8_t *moved) const;
 
 private:
+    // child = parent * origin * motion(q)
+    static void compose(const Joint &joint, const Pose &parent, double q, Pose &child);
     void check_links(const std::string &source) const;
     void order_joints(const std::string &source);
     void resolve_mimics(const std::string &source);

@@ -195,6 +195,42 @@ static void a_changed_link_set_is_seen(void **state) {
     opx_linkset_destroy(arm);
 }
 
+/* Rows that each change one joint of the previous (as a planner's
+ * neighbours do; FK then redoes only the links below it), a repeated row,
+ * and a root pose that changes once: distances equal the single calls'
+ * bit for bit. */
+static void rows_changing_one_joint_at_a_time(void **state) {
+    (void)state;
+    enum { N = 80 };
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double *rows = random_arm_rows(N, 17);
+    uint64_t seed = 5;
+    for (size_t i = 1; i < N; ++i) {
+        memcpy(rows + i * ARM_JOINTS, rows + (i - 1) * ARM_JOINTS, ARM_JOINTS * sizeof(double));
+        const int j = (int)(i % 9 == 4 ? 7 : i % ARM_REVOLUTE);
+        if (i % 11 != 5) rows[i * ARM_JOINTS + j] = next_uniform(&seed, -3.0, 3.0) * (j == 7 ? 0.01 : 1.0);
+    }
+    opx_pose bases[N];
+    for (size_t i = 0; i < N; ++i) bases[i] = pose_at(i < N / 2 ? 0.0 : 0.2, 0.0, 0.0);
+    opx_query *query = new_query();
+    opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+    request.compute_distance = 1;
+    uint8_t collided[N];
+    double distances[N];
+    assert_ok(opx_query_check_configurations(query, tree, arm, rows, N, ARM_JOINTS, 0, bases, N, 0, &request,
+                                             collided, distances, N));
+    for (size_t i = 0; i < N; ++i) {
+        const double *q = rows + i * ARM_JOINTS;
+        assert_int_equal(collided[i], single_collides(query, tree, arm, q, &bases[i]));
+        assert_true(distances[i] == single_distance(query, tree, arm, q, &bases[i], 0.0));
+    }
+    opx_query_destroy(query);
+    free(rows);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
 /* The arm folds onto itself in some configurations free of the map: the
  * self check adds them, and only them. */
 static void self_collision_adds_configurations(void **state) {
@@ -231,6 +267,7 @@ int main(void) {
         cmocka_unit_test(two_threads_share_one_link_set),
         cmocka_unit_test(a_changed_link_set_is_seen),
         cmocka_unit_test(self_collision_adds_configurations),
+        cmocka_unit_test(rows_changing_one_joint_at_a_time),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,16 +9,32 @@ void PosedRobot::bind(const LinkSet &links, const JointTree &joints) {
     }
     joints_ = &joints;
     positions_.resize(joints.joint_count());
+    previous_.resize(joints.joint_count());
+    moved_.resize(joints.link_count());
     poses_.resize(links.link_count());
     for (size_t i = joints.link_count(); i < links.link_count(); ++i)
         poses_[i] = links.link(static_cast<uint32_t>(i)).pose;
+    posed_ = false;
 }
 
 const LinkSet &PosedRobot::pose(const double *commanded, const Pose &base) {
+    positions_.swap(previous_);
     joints_->positions_from(commanded, positions_.data());
-    joints_->link_poses(base, positions_.data(), poses_.data());
+    forward_kinematics(base);
     copy_->set_poses(poses_);
     return *copy_;
+}
+
+void PosedRobot::forward_kinematics(const Pose &base) {
+    if (!posed_) {
+        joints_->link_poses(base, positions_.data(), poses_.data());
+        posed_ = true;
+    } else {
+        const bool base_moved = !(base.rotation == base_.rotation && base.translation == base_.translation);
+        joints_->update_link_poses(base, base_moved, positions_.data(), previous_.data(), poses_.data(),
+                                   moved_.data());
+    }
+    base_ = base;
 }
 
 void PosedRobot::positions(const double *commanded, std::vector<double> &out) const {

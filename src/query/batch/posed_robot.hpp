@@ -34,11 +34,19 @@ public:
     const LinkSet &links() const { return *copy_; }
 
 private:
+    void forward_kinematics(const Pose &base);
+
     std::unique_ptr<LinkSet> copy_;
     uint64_t source_ = 0;  // identity of the set copied
     const JointTree *joints_ = nullptr;
-    std::vector<double> positions_;
+    // FK redoes only what changed since the last pose (a planner's batch
+    // moves an arm or two of a robot): positions_ and poses_ hold the last
+    // configuration's, previous_ the one before.
+    std::vector<double> positions_, previous_;
     std::vector<Pose> poses_;
+    std::vector<uint8_t> moved_;
+    Pose base_;
+    bool posed_ = false;  // poses_ hold an FK result of positions_ and base_
 };
 
 }  // namespace octoprox
