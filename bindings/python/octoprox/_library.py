@@ -127,6 +127,15 @@ SIGNATURES = {
                                          P(s.CollisionResult)]),
     "opx_query_distance_boxes": (status, [handle, handle, P(s.DistanceRequest),
                                           P(s.DistanceResult)]),
+    # batch.h
+    "opx_query_check_configurations": (status, [handle, handle, handle, c_void_p, c_size_t, c_size_t,
+                                                c_size_t, c_void_p, c_size_t, c_size_t,
+                                                P(s.BatchRequest), c_void_p, c_void_p, c_size_t]),
+    "opx_query_check_motion": (status, [handle, handle, handle, c_void_p, c_void_p, c_size_t,
+                                        P(s.Pose), P(s.MotionRequest), P(s.MotionResult)]),
+    "opx_query_check_motions": (status, [handle, handle, handle, c_void_p, c_void_p, c_size_t,
+                                         c_size_t, c_size_t, c_void_p, c_size_t, c_size_t,
+                                         P(s.MotionRequest), c_void_p, c_void_p, c_size_t]),
     # io.h
     "opx_point_cloud_read_file": (status, [c_char_p, P(handle)]),
     "opx_point_cloud_destroy": (None, [handle]),

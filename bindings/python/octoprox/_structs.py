@@ -162,6 +162,28 @@ class PathResult(Struct):
                 ("narrow_tests", c_uint64)]
 
 
+class BatchRequest(Struct):
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("self_collision", c_int32),
+                ("compute_distance", c_int32), ("distance_cutoff", c_double),
+                ("max_threads", c_uint32), ("reserved0", c_uint32)]
+
+
+class MotionRequest(Struct):
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("resolution", c_double),
+                ("self_collision", c_int32), ("compute_cost", c_int32),
+                ("max_cost_boxes", c_uint32), ("max_threads", c_uint32),
+                ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3)]
+
+
+class MotionResult(Struct):
+    _fields_ = [("struct_size", c_uint32), ("collided", c_int32),
+                ("first_collision_fraction", c_double), ("steps", c_uint64),
+                ("configurations_checked", c_uint64), ("total_cost", c_double),
+                ("cost_box_count", c_uint64), ("cost_boxes_found", c_uint64)]
+
+
 class UrdfOptions(Struct):
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
                 ("package_dirs", ctypes.POINTER(ctypes.c_char_p)),
@@ -217,6 +239,9 @@ VERSIONED = {
     DistanceResult: "opx_distance_result_init",
     PathRequest: "opx_path_request_init",
     PathResult: "opx_path_result_init",
+    BatchRequest: "opx_batch_request_init",
+    MotionRequest: "opx_motion_request_init",
+    MotionResult: "opx_motion_result_init",
     UrdfOptions: "opx_urdf_options_init",
     JointInfo: "opx_joint_info_init",
     PointCloudInfo: "opx_point_cloud_info_init",

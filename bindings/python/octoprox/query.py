@@ -3,6 +3,7 @@
 import numpy as np
 
 from . import _structs as s
+from . import batch as _batch
 from ._arrays import (CONTACT_DTYPE, COST_BOX_DTYPE, box_array, invalid, pose_array, pose_strides,
                       read_array)
 from ._handle import Handle
@@ -103,6 +104,47 @@ class Query(Handle):
                            waypoint_stride, req, out)
         self._cost_box_count = out.cost_box_count
         return out
+
+    def check_configurations(self, tree, robot, q, threads=1, self_collision=False, base_pose=None,
+                             distance=False, **request):
+        """Checks many joint vectors of a robot made from URDF at once: q is
+        an (N, dof) array, every joint in model order (robot.joint_names).
+        Returns a numpy bool array of N collided flags (the map, and the
+        robot itself with self_collision=True); with distance=True, a tuple
+        (collided, distances), each configuration's minimum distance.
+        base_pose: the root link in the map frame, one for all rows or an
+        (N, 7) array, one per row.  threads: 1 runs on the calling thread,
+        0 on every core; the answers do not depend on it.  The robot does
+        not move; the GIL is released during the call.  Other keywords are
+        fields of opx_batch_request (unknown_policy, occupancy_threshold,
+        distance_cutoff)."""
+        _check_operands(tree, robot, "Query.check_configurations")
+        return _batch.check_configurations(self, tree, robot, q, threads, self_collision, base_pose,
+                                           distance, **request)
+
+    def check_motion(self, tree, robot, start, goal, resolution=0.01, self_collision=False,
+                     base_pose=None, **request):
+        """Checks the straight joint-space motion from start to goal (joint
+        vectors in model order) at configurations no joint step farther
+        apart than resolution (rad or m).  Returns the MotionResult:
+        collided, first_collision_fraction (-1: none), steps,
+        configurations_checked; with compute_cost=True also the swept cost
+        (cost_boxes() then gives its boxes)."""
+        _check_operands(tree, robot, "Query.check_motion")
+        self._contact_count = self._cost_box_count = 0
+        out = _batch.check_motion(self, tree, robot, start, goal, resolution, self_collision,
+                                  base_pose, **request)
+        self._cost_box_count = out.cost_box_count
+        return out
+
+    def check_motions(self, tree, robot, starts, goals, resolution=0.01, threads=1,
+                      self_collision=False, base_pose=None, **request):
+        """Many motions (a planner's edges): row m of starts to row m of
+        goals, (M, dof) arrays.  Returns (collided, first_fractions): a bool
+        array and each motion's first colliding fraction (-1: none)."""
+        _check_operands(tree, robot, "Query.check_motions")
+        return _batch.check_motions(self, tree, robot, starts, goals, resolution, threads,
+                                    self_collision, base_pose, **request)
 
     def bind_boxes(self, boxes):
         """Binds a caller's boxes as the map (amortized contexts only): an
