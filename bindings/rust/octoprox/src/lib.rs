@@ -21,6 +21,7 @@
 //! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
 //! use one per thread.
 
+mod batch;
 mod cloud;
 mod depth;
 mod error;
@@ -30,6 +31,7 @@ mod points;
 mod query;
 mod robot;
 
+pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
 pub use cloud::{read_point_cloud, PointCloud, PointCloudInfo};
 pub use depth::{camera_intrinsics, CameraIntrinsics, DepthImage};
 pub use error::{status_name, Error, Result};
@@ -59,6 +61,9 @@ pub type DistanceRequest = sys::opx_distance_request;
 pub type DistanceResult = sys::opx_distance_result;
 pub type PathRequest = sys::opx_path_request;
 pub type PathResult = sys::opx_path_result;
+pub type BatchRequest = sys::opx_batch_request;
+pub type MotionRequest = sys::opx_motion_request;
+pub type MotionResult = sys::opx_motion_result;
 
 /// The constants of the C headers (`OPX_CELL_OCCUPIED`, `OPX_MASK_ALL_KNOWN`,
 /// `OPX_UNKNOWN_OCCUPIED`, `OPX_ENGINE_AMORTIZED`, `OPX_FORMAT_BT`, ...).

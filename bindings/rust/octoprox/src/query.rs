@@ -38,6 +38,15 @@ impl Query {
         Ok(Query { raw, contact_count: 0, cost_box_count: 0 })
     }
 
+    pub(crate) fn as_raw_mut(&mut self) -> *mut sys::opx_query {
+        self.raw
+    }
+
+    /// After a call that leaves `cost_boxes` cost boxes and no contacts.
+    pub(crate) fn hold_cost_boxes(&mut self, cost_boxes: usize) {
+        (self.contact_count, self.cost_box_count) = (0, cost_boxes);
+    }
+
     /// What the context holds (amortized engine).
     pub fn stats(&self) -> Result<QueryStats> {
         let mut out = QueryStats::default();

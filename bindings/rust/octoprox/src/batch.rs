@@ -1,0 +1,148 @@
+//! Many configurations and joint-space motions per call
+//! (`include/octoprox/batch.h`).  Joint vectors are rows of every joint of
+//! a robot made from URDF, in model order (as
+//! [`LinkSet::set_joint_positions`] takes them), packed one after the other
+//! in one slice.  The robot is only read (`&LinkSet`): forward kinematics
+//! runs on the query's own copies, so other threads may use the same robot.
+use crate::error::{check, Error, Result};
+use crate::{sys, BatchRequest, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query};
+use std::ptr;
+
+/// Where the robot's root link is (map frame) for each row.
+#[derive(Debug, Clone, Copy)]
+pub enum BasePoses<'a> {
+    /// At the map origin.
+    Origin,
+    /// The same pose for every row.
+    Shared(Pose),
+    /// One pose per row.
+    PerRow(&'a [Pose]),
+}
+
+impl BasePoses<'_> {
+    fn raw(&self) -> (*const Pose, usize) {
+        match self {
+            BasePoses::Origin => (ptr::null(), 0),
+            BasePoses::Shared(pose) => (pose as *const Pose, 1),
+            BasePoses::PerRow(poses) => (poses.as_ptr(), poses.len()),
+        }
+    }
+}
+
+/// The answers of [`Query::check_configurations`], one per row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConfigurationAnswers {
+    /// The configuration touches the map (or, with `self_collision`, itself).
+    pub collided: Vec<bool>,
+    /// With `compute_distance`: each configuration's minimum distance
+    /// (metres); empty otherwise.
+    pub distances: Vec<f64>,
+}
+
+/// The answers of [`Query::check_motions`], one per motion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionAnswers {
+    pub collided: Vec<bool>,
+    /// Where the first colliding configuration lies along the motion, in
+    /// [0, 1]; -1 when none collides.
+    pub first_fractions: Vec<f64>,
+}
+
+/// Rows of `values` for the robot: the row count, each row `joints` values.
+fn row_count(robot: &LinkSet, values: &[f64], what: &str) -> Result<(usize, usize)> {
+    let joints = robot.joint_count()? as usize;
+    if (joints == 0 && !values.is_empty()) || (joints > 0 && values.len() % joints != 0) {
+        return Err(Error::new(
+            sys::OPX_ERROR_INVALID_ARGUMENT,
+            format!("{what}: {} values are not rows of the robot's {joints} joints", values.len()),
+        ));
+    }
+    Ok((if joints == 0 { 0 } else { values.len() / joints }, joints))
+}
+
+fn flags(bytes: Vec<u8>) -> Vec<bool> {
+    bytes.into_iter().map(|b| b != 0).collect()
+}
+
+impl Query {
+    /// Checks many configurations of `robot` against `tree` in one call:
+    /// `rows` holds N joint vectors (N x joint count values, model order).
+    /// `request.max_threads` workers split them (1, the default: the
+    /// calling thread; 0: every core); the answers do not depend on it.
+    /// `request.self_collision = 1` also checks the robot against itself,
+    /// `request.compute_distance = 1` gives each configuration's minimum
+    /// distance.  No rows: no answers.
+    pub fn check_configurations(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64],
+                                bases: BasePoses<'_>, request: &BatchRequest)
+        -> Result<ConfigurationAnswers> {
+        let (count, joints) = row_count(robot, rows, "Query::check_configurations: rows")?;
+        let mut collided = vec![0u8; count];
+        let mut distances = vec![0.0; if request.compute_distance != 0 { count } else { 0 }];
+        if count > 0 {
+            let (base, base_count) = bases.raw();
+            let out_distances = if distances.is_empty() { ptr::null_mut() } else { distances.as_mut_ptr() };
+            // SAFETY: rows holds count packed rows of `joints` doubles, the
+            // bases base_count poses, the outputs `count` values each; live
+            // handles, tree and robot only read.
+            check(unsafe {
+                sys::opx_query_check_configurations(
+                    self.as_raw_mut(), tree.as_raw(), robot.as_raw(), rows.as_ptr(), count, joints, 0,
+                    base, base_count, 0, request, collided.as_mut_ptr(), out_distances, count)
+            })?;
+        }
+        Ok(ConfigurationAnswers { collided: flags(collided), distances })
+    }
+
+    /// Checks the straight joint-space motion from `start` to `goal` (joint
+    /// vectors in model order) at configurations no joint step farther apart
+    /// than `request.resolution` (rad or m); the root link at `base` (map
+    /// frame; `None`: the origin).  With `request.compute_cost = 1` the
+    /// swept cost's boxes are then read with [`Query::cost_boxes`].
+    pub fn check_motion(&mut self, tree: &Octree, robot: &LinkSet, start: &[f64], goal: &[f64],
+                        base: Option<&Pose>, request: &MotionRequest) -> Result<MotionResult> {
+        if start.len() != goal.len() {
+            return Err(Error::new(
+                sys::OPX_ERROR_INVALID_ARGUMENT,
+                format!("Query::check_motion: start has {} joints, goal {}", start.len(), goal.len()),
+            ));
+        }
+        let mut out = MotionResult::default();
+        self.hold_cost_boxes(0);
+        let base = base.map_or(ptr::null(), |b| b as *const Pose);
+        // SAFETY: start and goal hold start.len() doubles each; live handles.
+        check(unsafe {
+            sys::opx_query_check_motion(self.as_raw_mut(), tree.as_raw(), robot.as_raw(), start.as_ptr(),
+                                        goal.as_ptr(), start.len(), base, request, &mut out)
+        })?;
+        self.hold_cost_boxes(out.cost_box_count as usize);
+        Ok(out)
+    }
+
+    /// Checks many motions (a planner's edges): row m of `starts` to row m
+    /// of `goals`, split over `request.max_threads` workers, as
+    /// [`Query::check_motion`] checks one (without cost).
+    pub fn check_motions(&mut self, tree: &Octree, robot: &LinkSet, starts: &[f64], goals: &[f64],
+                         bases: BasePoses<'_>, request: &MotionRequest) -> Result<MotionAnswers> {
+        let (count, joints) = row_count(robot, starts, "Query::check_motions: starts")?;
+        if goals.len() != starts.len() {
+            return Err(Error::new(
+                sys::OPX_ERROR_INVALID_ARGUMENT,
+                format!("Query::check_motions: {} start values but {} goal values", starts.len(), goals.len()),
+            ));
+        }
+        let mut collided = vec![0u8; count];
+        let mut first_fractions = vec![0.0; count];
+        if count > 0 {
+            let (base, base_count) = bases.raw();
+            // SAFETY: starts and goals hold count packed rows of `joints`
+            // doubles, the outputs `count` values; live handles.
+            check(unsafe {
+                sys::opx_query_check_motions(
+                    self.as_raw_mut(), tree.as_raw(), robot.as_raw(), starts.as_ptr(), goals.as_ptr(), count,
+                    joints, 0, base, base_count, 0, request, collided.as_mut_ptr(),
+                    first_fractions.as_mut_ptr(), count)
+            })?;
+        }
+        Ok(MotionAnswers { collided: flags(collided), first_fractions })
+    }
+}

@@ -1,0 +1,149 @@
+//! Many configurations and motions per call on a generated 7-joint arm
+//! (as bindings/python/tests/test_batch.py): the answers equal single calls
+//! for 1, 2 and 3 threads, motions equal a walk over their samples, bad
+//! input is an error naming the argument.
+mod common;
+use common::*;
+use octoprox::consts::*;
+use octoprox::{pose_at, BasePoses, BatchRequest, CollisionRequest, DistanceRequest, LinkSet,
+               MotionRequest, Octree, Query, QueryOptions, UrdfOptions};
+
+const JOINTS: usize = 7;
+
+/// Links l0..l7, each a cylinder from 0.04 to 0.2 m along its z, joints
+/// alternating z and y axes 0.24 m apart.
+fn arm() -> LinkSet {
+    use std::fmt::Write;
+    let mut xml = String::from("<robot name=\"arm\">");
+    for k in 0..=JOINTS {
+        write!(xml, "<link name=\"l{k}\"><collision><origin xyz=\"0 0 0.12\"/><geometry>\
+                         <cylinder radius=\"0.035\" length=\"0.16\"/></geometry></collision></link>").unwrap();
+        if k > 0 {
+            let axis = if k % 2 == 1 { "0 0 1" } else { "0 1 0" };
+            let z = if k == 1 { 0.1 } else { 0.24 };
+            write!(xml, "<joint name=\"j{k}\" type=\"revolute\"><parent link=\"l{}\"/>\
+                             <child link=\"l{k}\"/><origin xyz=\"0 0 {z}\"/><axis xyz=\"{axis}\"/>\
+                             <limit lower=\"-3.14\" upper=\"3.14\" effort=\"1\" velocity=\"1\"/></joint>",
+                   k - 1).unwrap();
+        }
+    }
+    xml += "</robot>";
+    LinkSet::from_urdf_string(&xml, &UrdfOptions::default()).unwrap()
+}
+
+/// A reproducible uniform generator (64-bit LCG).
+struct Lcg(u64);
+
+impl Lcg {
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
+    }
+}
+
+fn scatter_map() -> Octree {
+    let mut rng = Lcg(7);
+    let points: Vec<[f64; 3]> = (0..90)
+        .map(|_| [rng.uniform(-1.1, 1.1), rng.uniform(-1.1, 1.1), rng.uniform(0.15, 1.9)])
+        .collect();
+    let mut tree = new_tree(0.05);
+    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, OPX_INSERT_ENDPOINTS)).unwrap();
+    tree
+}
+
+fn rows(n: usize, seed: u64) -> Vec<f64> {
+    let mut rng = Lcg(seed);
+    (0..n * JOINTS).map(|_| rng.uniform(-3.1, 3.1)).collect()
+}
+
+fn new_query() -> Query {
+    Query::new(&QueryOptions::default()).unwrap()
+}
+
+fn single(query: &mut Query, tree: &Octree, robot: &mut LinkSet, q: &[f64]) -> bool {
+    robot.set_joint_positions(q, None).unwrap();
+    let request = CollisionRequest { max_contacts: 0, ..Default::default() };
+    query.collide(tree, robot, &request).unwrap().collided != 0
+}
+
+#[test]
+fn configurations_equal_single_calls_for_every_thread_count() {
+    let (mut robot, tree, q) = (arm(), scatter_map(), rows(120, 11));
+    let mut reference = new_query();
+    let expected: Vec<bool> = q.chunks(JOINTS).map(|row| single(&mut reference, &tree, &mut robot, row)).collect();
+    assert!(expected.iter().any(|&c| c) && expected.iter().any(|&c| !c));
+    for threads in 1..=3 {
+        let request = BatchRequest { max_threads: threads, compute_distance: 1, ..Default::default() };
+        let answers = new_query().check_configurations(&tree, &robot, &q, BasePoses::Origin, &request).unwrap();
+        assert_eq!(answers.collided, expected);
+        for (row, distance) in q.chunks(JOINTS).zip(&answers.distances) {
+            robot.set_joint_positions(row, None).unwrap();
+            assert_eq!(*distance, reference.distance(&tree, &robot, &DistanceRequest::default()).unwrap().distance);
+        }
+    }
+}
+
+#[test]
+fn base_poses_and_self_collision() {
+    let (mut robot, tree, q) = (arm(), scatter_map(), rows(40, 13));
+    let bases: Vec<_> = (0..40).map(|i| pose_at(-0.3 + 0.015 * i as f64, 0.0, 0.0)).collect();
+    let mut query = new_query();
+    let answers = query.check_configurations(&tree, &robot, &q, BasePoses::PerRow(&bases),
+                                             &BatchRequest::default()).unwrap();
+    let mut reference = new_query();
+    for (i, row) in q.chunks(JOINTS).enumerate() {
+        robot.set_joint_positions(row, Some(&bases[i])).unwrap();
+        let request = CollisionRequest { max_contacts: 0, ..Default::default() };
+        assert_eq!(answers.collided[i], reference.collide(&tree, &robot, &request).unwrap().collided != 0);
+    }
+    let shared = query.check_configurations(&tree, &robot, &q, BasePoses::Shared(bases[0]),
+                                            &BatchRequest::default()).unwrap();
+    assert_eq!(shared.collided.len(), 40);
+    let with_self = BatchRequest { self_collision: 1, max_threads: 2, ..Default::default() };
+    let world = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default()).unwrap();
+    let both = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &with_self).unwrap();
+    assert!(world.collided.iter().zip(&both.collided).all(|(w, b)| !w || *b));
+}
+
+#[test]
+fn motions_equal_a_walk_over_their_samples() {
+    let (mut robot, tree, starts) = (arm(), scatter_map(), rows(20, 3));
+    let mut rng = Lcg(5);
+    let goals: Vec<f64> = starts.iter().map(|v| v + rng.uniform(-0.4, 0.4)).collect();
+    let request = MotionRequest { resolution: 0.05, max_threads: 2, ..Default::default() };
+    let mut query = new_query();
+    let batch = query.check_motions(&tree, &robot, &starts, &goals, BasePoses::Origin, &request).unwrap();
+    let mut reference = new_query();
+    for (m, (a, b)) in starts.chunks(JOINTS).zip(goals.chunks(JOINTS)).enumerate() {
+        let result = query.check_motion(&tree, &robot, a, b, None, &request).unwrap();
+        let n = result.steps;
+        let first = (0..=n).find(|&i| {
+            let q: Vec<f64> = if i == n { b.to_vec() } else {
+                a.iter().zip(b).map(|(x, y)| x + (i as f64 / n as f64) * (y - x)).collect()
+            };
+            single(&mut reference, &tree, &mut robot, &q)
+        });
+        let fraction = first.map_or(-1.0, |i| i as f64 / n as f64);
+        assert_eq!(result.first_collision_fraction, fraction);
+        assert_eq!((batch.collided[m], batch.first_fractions[m]), (first.is_some(), fraction));
+    }
+}
+
+#[test]
+fn bad_input_is_an_error_naming_the_argument() {
+    let (robot, tree) = (arm(), scatter_map());
+    let mut query = new_query();
+    let error = query.check_configurations(&tree, &robot, &[0.0; 10], BasePoses::Origin, &BatchRequest::default())
+        .unwrap_err();
+    assert_eq!(error.status(), OPX_ERROR_INVALID_ARGUMENT);
+    let mut q = rows(2, 1);
+    q[9] = f64::NAN;
+    let error = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default())
+        .unwrap_err();
+    assert!(error.message().contains("positions[row 1][joint 2]"), "{}", error.message());
+    let bad = MotionRequest { resolution: 0.0, ..Default::default() };
+    let error = query.check_motion(&tree, &robot, &q[..7], &q[..7], None, &bad).unwrap_err();
+    assert!(error.message().contains("request->resolution"), "{}", error.message());
+    let none = query.check_configurations(&tree, &robot, &[], BasePoses::Origin, &BatchRequest::default()).unwrap();
+    assert!(none.collided.is_empty());
+}
