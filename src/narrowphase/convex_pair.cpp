@@ -37,6 +37,23 @@ CoreDistance core_distance(const Convex &a, const Convex &b, double scale, doubl
     return d;
 }
 
+// A point both overlapping cores hold: GJK ended on a tetrahedron of
+// differences w_i = s_i - c_i around the origin; the origin's barycentric
+// weights give sum l_i s_i = sum l_i c_i, a convex combination of points of
+// each core.  False when the tetrahedron is flat (the cores only touch).
+bool common_point(const Simplex &simplex, Vec3 &out) {
+    if (simplex.size != 4) return false;
+    Eigen::Matrix3d edges;
+    for (int i = 0; i < 3; ++i) edges.col(i) = simplex.w[i + 1] - simplex.w[0];
+    const double det = edges.determinant();
+    if (!(std::fabs(det) > 1e-30)) return false;
+    const Vec3 mu = edges.inverse() * (-simplex.w[0]);
+    const double l0 = 1.0 - mu.sum();
+    if (l0 < -1e-9 || (mu.array() < -1e-9).any()) return false;
+    out = l0 * simplex.s[0] + mu[0] * simplex.s[1] + mu[1] * simplex.s[2] + mu[2] * simplex.s[3];
+    return true;
+}
+
 // Cores that overlap: EPA gives their depth, normal and deepest points.
 PiecePairPenetration overlapping_cores(const InflatedPiece &a, const InflatedPiece &b, double scale,
                                        const Simplex &simplex) {
@@ -63,10 +80,18 @@ bool piece_pair_distance(const InflatedPiece &a, const InflatedPiece &b, double 
     const CoreDistance d = core_distance(*a.core, *b.core, scale, bound + balls, -1.0);
     if (!d.intersecting && d.distance - balls >= bound) return false;
     if (d.intersecting) {
-        // A point both cores hold: the middle of EPA's deepest points.
-        const PiecePairPenetration p = overlapping_cores(a, b, scale, d.simplex);
         out.distance = 0.0;
-        out.on_a = out.on_b = 0.5 * (p.on_a + p.on_b);
+        if (!common_point(d.simplex, out.on_a)) {
+            // Touching (a smaller simplex): GJK's witness; a flat
+            // tetrahedron: the middle of EPA's deepest points.
+            if (d.simplex.size < 4) {
+                out.on_a = d.on_a;
+            } else {
+                const PiecePairPenetration p = overlapping_cores(a, b, scale, d.simplex);
+                out.on_a = 0.5 * (p.on_a + p.on_b);
+            }
+        }
+        out.on_b = out.on_a;
         return true;
     }
     const Vec3 gap = d.on_b - d.on_a;
