@@ -197,6 +197,22 @@ void check_print_path(const check_context *c, size_t waypoints, const opx_path_r
     printf(", \"min_distance_waypoint\": %lld}", (long long)r->min_distance_waypoint);
 }
 
+void check_print_motions(const check_context *c, const check_motions_report *m) {
+    if (!c->json) {
+        printf("motions    %zu between the waypoints, checked every %g rad (or m) of joint motion\n", m->count,
+               c->resolution);
+        if (m->first_colliding >= 0)
+            printf("first collision between waypoints %lld and %lld, at %.6f of the way\n",
+                   (long long)m->first_colliding, (long long)m->first_colliding + 1, m->first_fraction);
+        return;
+    }
+    printf(",\n  \"motions\": {\"count\": %zu, \"resolution\": ", m->count);
+    json_number(stdout, c->resolution);
+    printf(", \"first_colliding\": %lld, \"first_collision_fraction\": ", (long long)m->first_colliding);
+    json_number(stdout, m->first_fraction);
+    fputs("}", stdout);
+}
+
 void check_print_tail(const check_context *c, int collided, double query_ms) {
     if (c->json) {
         printf(",\n  \"collided\": %s,\n  \"query_ms\": %.3f\n}\n", collided ? "true" : "false", query_ms);

@@ -15,7 +15,16 @@ typedef struct check_context {
     opx_query *query;
     int32_t unknown_policy;
     int want_distance, want_cost, json;
+    double resolution; /* --path: joint step between checked configurations (rad or m) */
+    uint32_t threads;  /* --path: threads of the batch calls (0: every core) */
 } check_context;
+
+/* The motions between the waypoints of a path (--path). */
+typedef struct check_motions_report {
+    size_t count;             /* waypoints - 1 */
+    int64_t first_colliding;  /* motion i goes from waypoint i to i + 1; -1: none */
+    double first_fraction;    /* along that motion, in [0, 1]; -1: none */
+} check_motions_report;
 
 const char *check_class_name(int32_t cell_class);
 const char *check_link_name(const opx_linkset *links, uint32_t link);
@@ -29,6 +38,7 @@ void check_print_contacts(const check_context *c, const opx_collision_result *r)
 void check_print_cost(const check_context *c, double total, uint64_t found, uint64_t held);
 void check_print_distance(const check_context *c, const opx_distance_result *d);
 void check_print_path(const check_context *c, size_t waypoints, const opx_path_result *r);
+void check_print_motions(const check_context *c, const check_motions_report *m);
 /* The tail: the verdict, the time; JSON: closes the object. */
 void check_print_tail(const check_context *c, int collided, double query_ms);
 

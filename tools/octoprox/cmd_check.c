@@ -1,8 +1,8 @@
 /* octoprox check MAP --urdf ...: collision, distance and cost of a robot. */
+#include "check_path.h"
 #include "check_report.h"
 #include "cli.h"
 #include "commands.h"
-#include "path_csv.h"
 #include "robot_args.h"
 
 #include <stdlib.h>
@@ -13,7 +13,7 @@ static const char kHelp[] =
     "                      [--srdf ROBOT.srdf] [--joints name=value,...]\n"
     "                      [--base-pose POSE] [--padding M] [--disable-link NAME]...\n"
     "                      [--distance] [--cost] [--unknown free|occupied]\n"
-    "                      [--path FILE.csv] [--json]\n"
+    "                      [--path FILE.csv [--resolution R] [--threads N]] [--json]\n"
     "\n"
     "Checks one robot configuration (or a path of them) against the map:\n"
     "collision with the occupied cells (every contact's link is listed), and\n"
@@ -27,7 +27,12 @@ static const char kHelp[] =
     "                        what never-observed space is (default free)\n"
     "  --path FILE.csv       check a path: the first line names joints, each\n"
     "                        further line is one waypoint's values; joints not\n"
-    "                        in the file keep their --joints values\n"
+    "                        in the file keep their --joints values; every\n"
+    "                        waypoint and the straight joint-space motion\n"
+    "                        between each two are checked\n"
+    "  --resolution R        --path: the largest joint step between two checked\n"
+    "                        configurations of a motion (rad or m; default 0.01)\n"
+    "  --threads N           --path: threads checking it (default 1; 0: every core)\n"
     "  --json                one JSON object: map, urdf, links, padding,\n"
     "                        disabled_links [names], srdf, srdf_disabled_pairs,\n"
     "                        unknown; then\n"
@@ -35,7 +40,9 @@ static const char kHelp[] =
     "                        [{link, cell_class, cell_center, cell_size}] (one\n"
     "                        configuration) or path {file, waypoints,\n"
     "                        first_colliding_waypoint, min_distance,\n"
-    "                        min_distance_waypoint} (--path); distance {found,\n"
+    "                        min_distance_waypoint} and motions {count,\n"
+    "                        resolution, first_colliding,\n"
+    "                        first_collision_fraction} (--path); distance {found,\n"
     "                        distance, link, point_on_link, point_on_cell} with\n"
     "                        --distance; cost {total, boxes_found, boxes [{link,\n"
     "                        cell_class, min, max, probability, cost}]} with\n"
@@ -44,7 +51,7 @@ static const char kHelp[] =
     "\n"
     "%s"
     "\n"
-    "exit codes: 0 no collision, 1 collision (some waypoint, with --path),\n"
+    "exit codes: 0 no collision, 1 collision (with --path: some waypoint or motion),\n"
     "2 usage error, 3 a file cannot be read or is malformed, 4 internal error\n";
 
 typedef struct check_args {
@@ -67,6 +74,17 @@ static int parse_option(cli_args *args, void *context) {
     } else if ((got = cli_value(args, "--path")) != 0) {
         if (got < 0) return cli_usage("check", "--path needs a CSV file");
         a->context.path_file = args->value;
+    } else if ((got = cli_value(args, "--resolution")) != 0) {
+        char *end = NULL;
+        if (got > 0) a->context.resolution = strtod(args->value, &end);
+        if (got < 0 || end == args->value || *end != '\0' || !(a->context.resolution > 0.0))
+            return cli_usage("check", "--resolution needs a step > 0 (rad or m)");
+    } else if ((got = cli_value(args, "--threads")) != 0) {
+        char *end = NULL;
+        const long threads = got > 0 ? strtol(args->value, &end, 10) : -1;
+        if (got < 0 || end == args->value || *end != '\0' || threads < 0 || threads > 1024)
+            return cli_usage("check", "--threads needs a count from 0 (every core) to 1024");
+        a->context.threads = (uint32_t)threads;
     } else {
         return cli_usage("check", "unknown option '%s'", args->argv[args->index]);
     }
@@ -76,6 +94,8 @@ static int parse_option(cli_args *args, void *context) {
 static int parse_arguments(int argc, char **argv, check_args *a) {
     int code;
     memset(a, 0, sizeof *a);
+    a->context.resolution = 0.01;
+    a->context.threads = 1;
     robot_args_init(&a->robot);
     code = cli_walk_map_arguments(argc, argv, "check", kHelp, kRobotOptionsHelp, &a->map, parse_option, a);
     if (code >= 0) return code;
@@ -110,61 +130,6 @@ static int check_one(check_context *c, int *collided) {
     return -1;
 }
 
-/* Every link's pose at every waypoint of the CSV path (FK per waypoint). */
-static int path_poses(const check_context *c, opx_linkset *links, const robot_args *robot, const path_csv *csv,
-                      opx_pose **out) {
-    uint32_t link_count = 0, l;
-    size_t w;
-    cli_progress progress;
-    opx_linkset_get_link_count(links, &link_count);
-    *out = malloc(csv->waypoint_count * (link_count ? link_count : 1) * sizeof(opx_pose));
-    if (*out == NULL) return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's poses");
-    cli_progress_start(&progress, "kinematics of the path", csv->waypoint_count);
-    for (w = 0; w < csv->waypoint_count; ++w) {
-        const opx_status status = opx_linkset_set_named_joint_positions(
-            links, (const char *const *)csv->names, csv->values + w * csv->joint_count, csv->joint_count,
-            &robot->base_pose);
-        if (status != OPX_OK) {
-            cli_progress_finish(&progress);
-            return cli_fail("check", status == OPX_ERROR_INVALID_ARGUMENT ? CLI_EXIT_INPUT : CLI_EXIT_INTERNAL,
-                            "%s: waypoint %zu: %s", c->path_file, w, opx_last_error());
-        }
-        for (l = 0; l < link_count; ++l) opx_linkset_get_pose(links, l, &(*out)[w * link_count + l]);
-        cli_progress_update(&progress, w + 1);
-    }
-    cli_progress_finish(&progress);
-    return -1;
-}
-
-static int check_path(check_context *c, opx_linkset *links, const robot_args *robot, int *collided) {
-    char error[512];
-    path_csv csv;
-    opx_pose *poses = NULL;
-    opx_path_request request = OPX_PATH_REQUEST_INIT;
-    opx_path_result result = OPX_PATH_RESULT_INIT;
-    opx_status status;
-    int code;
-    if (path_csv_read(c->path_file, &csv, error, sizeof error) != 0)
-        return cli_fail("check", CLI_EXIT_INPUT, "%s", error);
-    code = path_poses(c, links, robot, &csv, &poses);
-    request.unknown_policy = c->unknown_policy;
-    request.compute_distance = c->want_distance;
-    request.compute_cost = c->want_cost;
-    request.max_cost_boxes = CHECK_MAX_LISTED;
-    if (code < 0) {
-        status = opx_query_path(c->query, c->map, links, poses, csv.waypoint_count, 0, 0, &request, &result);
-        if (status != OPX_OK) code = cli_library_fail("check", status, "the path query");
-    }
-    if (code < 0) {
-        *collided = result.collided;
-        check_print_path(c, csv.waypoint_count, &result);
-        if (c->want_cost) check_print_cost(c, result.total_cost, result.cost_boxes_found, result.cost_box_count);
-    }
-    free(poses);
-    path_csv_free(&csv);
-    return code;
-}
-
 static int run(check_args *a, opx_octree *map, opx_linkset *links) {
     check_context *c = &a->context;
     int collided = 0, code;
@@ -175,7 +140,7 @@ static int run(check_args *a, opx_octree *map, opx_linkset *links) {
     c->links = links;
     check_print_head(c);
     start = cli_now_ms();
-    code = c->path_file ? check_path(c, links, &a->robot, &collided) : check_one(c, &collided);
+    code = c->path_file ? check_path(c, links, &collided) : check_one(c, &collided);
     if (code < 0) check_print_tail(c, collided, cli_now_ms() - start);
     opx_query_destroy(c->query);
     return code >= 0 ? code : (collided ? CLI_EXIT_COLLISION : CLI_EXIT_OK);
