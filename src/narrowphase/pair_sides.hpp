@@ -1,39 +1,46 @@
 // A shape of a pair seen as a tree of convex pieces: a mesh is its triangle
 // tree, any other shape one leaf (its core).  The shape-pair tests
 // (shape_pair.cpp, shape_pair_distance.cpp) walk two such trees at once.
-// Two views: PosedSide reads a mesh's tree in its own frame and poses the
-// nodes it visits (oriented boxes; collision tests need no placed mesh),
+// Two views: PosedSide reads a mesh's tree in the mesh's own frame (boxes
+// there; collision tests need no placed mesh, see geometry/obb.hpp),
 // PlacedSide reads the placed mesh (map-frame boxes; distance searches).
 #pragma once
 
-#include "geometry/obb.hpp"
 #include "robot/shape.hpp"
 
 namespace octoprox {
 
 class PosedSide {
 public:
-    explicit PosedSide(const PlacedShape &shape)
-        : shape_(shape), tree_(shape.kind == ShapeKind::kMesh ? &shape.def->mesh_tree : nullptr) {}
+    explicit PosedSide(const PlacedShape &shape);
 
     const PlacedShape &shape() const { return shape_; }
     int32_t root() const { return 0; }
     bool leaf(int32_t node) const { return tree_ == nullptr || tree_->node(node).is_leaf(); }
     int32_t left(int32_t node) const { return tree_->node(node).left; }
     int32_t right(int32_t node) const { return tree_->node(node).right; }
-    // The node's box in the map frame, grown by the shape's padding: it
-    // holds the padded pieces below the node.
-    Obb bounds(int32_t node) const;
+    // The side's own frame in the map (p_map = rotation * p + origin).
+    const Eigen::Matrix3d &rotation() const { return rotation_; }
+    const Vec3 &origin() const { return origin_; }
+    // The node's box in that frame, grown by the shape's padding: it holds
+    // the padded pieces below the node.
+    Vec3 center(int32_t node) const { return tree_ == nullptr ? center_ : tree_->node(node).box.center(); }
+    Vec3 half(int32_t node) const {
+        return tree_ == nullptr ? half_ : Vec3(tree_->node(node).box.half_extent().array() + shape_.inflation);
+    }
     // A leaf's piece, in the map frame.
     Convex piece(int32_t node) const {
         return tree_ == nullptr ? shape_.core : shape_.posed_triangle(tree_->node(node).item);
     }
     // How large the node is (to pick which side to split).
-    double size(int32_t node) const { return bounds(node).half.squaredNorm(); }
+    double size(int32_t node) const { return half(node).squaredNorm(); }
 
 private:
     const PlacedShape &shape_;
     const AabbTree *tree_;
+    Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();
+    Vec3 origin_ = Vec3::Zero();
+    Vec3 center_ = Vec3::Zero(), half_ = Vec3::Zero();  // a single piece's box
 };
 
 class PlacedSide {

@@ -1,5 +1,6 @@
 #include "narrowphase/shape_pair.hpp"
 
+#include "geometry/obb.hpp"
 #include "narrowphase/convex_pair.hpp"
 #include "narrowphase/narrow_phase.hpp"
 #include "narrowphase/pair_sides.hpp"
@@ -8,24 +9,6 @@
 
 namespace octoprox {
 namespace {
-
-// The oriented box of a shape's core, grown by its padding.
-Obb core_bounds(const PlacedShape &s) {
-    const Convex &core = s.core;
-    const double r = s.inflation;
-    Obb obb;
-    obb.center = core.center, obb.axes = core.axes;
-    switch (s.kind) {
-    case ShapeKind::kSphere: obb.axes.setIdentity(), obb.half = Vec3::Constant(r); break;
-    case ShapeKind::kCapsule: obb.half = Vec3(r, r, 0.5 * (core.v[1] - core.v[0]).norm() + r); break;
-    case ShapeKind::kBox:
-    case ShapeKind::kCylinder: obb.half = core.half + Vec3::Constant(r); break;
-    default:  // a hull: its map-frame box, padded already
-        obb.center = s.box.center(), obb.axes.setIdentity(), obb.half = s.box.half_extent();
-        break;
-    }
-    return obb;
-}
 
 // Pairs of nodes (a's, b's) on a stack.  Median-split trees are at most
 // 33 levels deep and each split adds one entry: 160 never overflow.
@@ -39,12 +22,13 @@ constexpr int kPairStack = 160;
 // returns true, and returns true then.
 template <class Visit>
 bool walk_close_leaves(const PosedSide &a, const PosedSide &b, Visit &&visit) {
+    const RelativeFrame frame(a.rotation(), a.origin(), b.rotation(), b.origin());
     NodePair stack[kPairStack];
     int top = 0;
     stack[top++] = {a.root(), b.root()};
     while (top > 0) {
         const NodePair p = stack[--top];
-        if (!obbs_within(a.bounds(p.a), b.bounds(p.b), kTouchTolerance)) continue;
+        if (!boxes_within(a.center(p.a), a.half(p.a), b.center(p.b), b.half(p.b), frame, kTouchTolerance)) continue;
         const bool a_leaf = a.leaf(p.a), b_leaf = b.leaf(p.b);
         if (a_leaf && b_leaf) {
             if (visit(p.a, p.b)) return true;
@@ -63,14 +47,23 @@ bool walk_close_leaves(const PosedSide &a, const PosedSide &b, Visit &&visit) {
 
 }  // namespace
 
-Obb PosedSide::bounds(int32_t node) const {
-    if (tree_ == nullptr) return core_bounds(shape_);
-    const Aabb &local = tree_->node(node).box;
-    Obb obb;
-    obb.axes = shape_.core.axes;
-    obb.center = obb.axes * local.center() + shape_.core.center;
-    obb.half = local.half_extent() + Vec3::Constant(shape_.inflation);
-    return obb;
+// A mesh: its shape frame, where its tree lives.  A box, cylinder or
+// capsule: its own frame, its box there tight.  A sphere, or a hull: the
+// map's axes around the padded box.
+PosedSide::PosedSide(const PlacedShape &shape)
+    : shape_(shape), tree_(shape.kind == ShapeKind::kMesh ? &shape.def->mesh_tree : nullptr) {
+    const Convex &core = shape.core;
+    const double r = shape.inflation;
+    switch (shape.kind) {
+    case ShapeKind::kMesh: rotation_ = core.axes, origin_ = core.center; break;
+    case ShapeKind::kBox:
+    case ShapeKind::kCylinder: rotation_ = core.axes, origin_ = core.center, half_ = core.half + Vec3::Constant(r); break;
+    case ShapeKind::kCapsule:
+        rotation_ = core.axes, origin_ = core.center;
+        half_ = Vec3(r, r, 0.5 * (core.v[1] - core.v[0]).norm() + r);
+        break;
+    default: center_ = shape.box.center(), half_ = shape.box.half_extent(); break;
+    }
 }
 
 bool shapes_touch(const PlacedShape &a, const PlacedShape &b, uint64_t &narrow_tests) {
