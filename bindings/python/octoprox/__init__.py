@@ -17,8 +17,10 @@ from ._errors import (BufferTooSmallError, CorruptDataError, InternalError,
 from ._library import HEADER_VERSION, lib
 from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionResult, Contact,
                        CostBox, DepthImage, DistanceRequest, DistanceResult, InsertOptions,
-                       InsertReport, JointInfo, Leaf, OctreeOptions, OctreeStats, PathRequest,
-                       PathResult, PointCloudInfo, Pose, QueryOptions, QueryStats, UrdfOptions)
+                       InsertReport, JointInfo, Leaf, OctreeOptions, OctreeStats,
+                       PairSamplingOptions, PathRequest, PathResult, PointCloudInfo, Pose,
+                       QueryOptions, QueryStats, SelfCollisionRequest, SelfCollisionResult,
+                       SelfContact, SelfDistanceRequest, SelfDistanceResult, UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
@@ -56,8 +58,9 @@ __all__ = [
     "CameraIntrinsics", "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox",
     "DepthImage", "DistanceRequest",
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
-    "OctreeStats", "PathRequest", "PathResult", "PointCloudInfo", "Pose", "QueryOptions",
-    "QueryStats", "UrdfOptions",
+    "OctreeStats", "PairSamplingOptions", "PathRequest", "PathResult", "PointCloudInfo", "Pose",
+    "QueryOptions", "QueryStats", "SelfCollisionRequest", "SelfCollisionResult", "SelfContact",
+    "SelfDistanceRequest", "SelfDistanceResult", "UrdfOptions",
     # exceptions
     "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
     "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",

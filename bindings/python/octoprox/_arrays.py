@@ -30,6 +30,7 @@ _SCALARS = {np.dtype(np.float32): SCALAR_FLOAT32, np.dtype(np.float64): SCALAR_F
 # Result rows as numpy structured arrays, laid out exactly as the C structs.
 CONTACT_DTYPE = np.dtype(s.Contact)
 COST_BOX_DTYPE = np.dtype(s.CostBox)
+SELF_CONTACT_DTYPE = np.dtype(s.SelfContact)
 LEAF_DTYPE = np.dtype(s.Leaf)
 POSE_SIZE = 7 * 8
 

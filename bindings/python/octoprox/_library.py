@@ -97,6 +97,8 @@ SIGNATURES = {
     "opx_linkset_set_link_enabled": (status, [handle, c_uint32, c_int32]),
     "opx_linkset_set_poses": (status, [handle, c_void_p, c_size_t, c_size_t]),
     "opx_linkset_get_pose": (status, [handle, c_uint32, P(s.Pose)]),
+    "opx_linkset_set_pair_enabled": (status, [handle, c_uint32, c_uint32, c_int32]),
+    "opx_linkset_get_pair_enabled": (status, [handle, c_uint32, c_uint32, P(c_int32)]),
     # robot.h
     "opx_linkset_load_urdf_file": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
     "opx_linkset_load_urdf_string": (status, [c_char_p, P(s.UrdfOptions), P(handle)]),
@@ -127,6 +129,14 @@ SIGNATURES = {
                                          P(s.CollisionResult)]),
     "opx_query_distance_boxes": (status, [handle, handle, P(s.DistanceRequest),
                                           P(s.DistanceResult)]),
+    # self_collision.h
+    "opx_query_self_collide": (status, [handle, handle, P(s.SelfCollisionRequest),
+                                        P(s.SelfCollisionResult)]),
+    "opx_query_get_self_contact": (status, [handle, c_size_t, c_void_p]),
+    "opx_query_self_distance": (status, [handle, handle, P(s.SelfDistanceRequest),
+                                         P(s.SelfDistanceResult)]),
+    "opx_linkset_disable_never_colliding_pairs": (status, [handle, P(s.PairSamplingOptions),
+                                                           P(c_uint32), P(c_uint32)]),
     # batch.h
     "opx_query_check_configurations": (status, [handle, handle, handle, c_void_p, c_size_t, c_size_t,
                                                 c_size_t, c_void_p, c_size_t, c_size_t,

@@ -146,6 +146,40 @@ class DistanceResult(Struct):
                 ("narrow_tests", c_uint64)]
 
 
+class SelfCollisionRequest(Struct):
+    _fields_ = [("struct_size", c_uint32), ("max_contacts", c_uint32),
+                ("compute_penetration", c_int32), ("reserved0", c_int32)]
+
+
+class SelfCollisionResult(Struct):
+    _fields_ = [("struct_size", c_uint32), ("collided", c_int32), ("contact_count", c_uint64),
+                ("truncated", c_int32), ("reserved0", c_uint32), ("link_pairs", c_uint64),
+                ("narrow_tests", c_uint64)]
+
+
+class SelfContact(Struct):
+    _fields_ = [("struct_size", c_uint32), ("link_a", c_uint32), ("shape_a", c_uint32),
+                ("link_b", c_uint32), ("shape_b", c_uint32), ("reserved0", c_uint32),
+                ("depth", c_double), ("normal", D3), ("position", D3)]
+
+
+class SelfDistanceRequest(Struct):
+    _fields_ = [("struct_size", c_uint32), ("signed_distance", c_int32), ("cutoff", c_double)]
+
+
+class SelfDistanceResult(Struct):
+    _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
+                ("link_a", c_uint32), ("shape_a", c_uint32), ("link_b", c_uint32),
+                ("shape_b", c_uint32), ("reserved0", c_uint32), ("distance", c_double),
+                ("point_on_a", D3), ("point_on_b", D3), ("link_pairs", c_uint64),
+                ("narrow_tests", c_uint64)]
+
+
+class PairSamplingOptions(Struct):
+    _fields_ = [("struct_size", c_uint32), ("samples", c_uint32), ("seed", c_uint64),
+                ("also_always_colliding", c_int32), ("reserved0", c_uint32)]
+
+
 class PathRequest(Struct):
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("compute_distance", c_int32),
@@ -237,6 +271,12 @@ VERSIONED = {
     CostBox: "opx_cost_box_init",
     DistanceRequest: "opx_distance_request_init",
     DistanceResult: "opx_distance_result_init",
+    SelfCollisionRequest: "opx_self_collision_request_init",
+    SelfCollisionResult: "opx_self_collision_result_init",
+    SelfContact: "opx_self_contact_init",
+    SelfDistanceRequest: "opx_self_distance_request_init",
+    SelfDistanceResult: "opx_self_distance_result_init",
+    PairSamplingOptions: "opx_pair_sampling_options_init",
     PathRequest: "opx_path_request_init",
     PathResult: "opx_path_result_init",
     BatchRequest: "opx_batch_request_init",

@@ -139,6 +139,24 @@ class LinkSet(Handle, RobotModel):
     def set_link_enabled(self, link, enabled):
         lib.opx_linkset_set_link_enabled(self, link, int(bool(enabled)))
 
+    def _link_index(self, link):
+        return self.find_link(link) if isinstance(link, str) else link
+
+    def set_pair_enabled(self, a, b, enabled):
+        """Whether self-collision queries (Query.self_collide,
+        Query.self_distance) check links a and b (indices or names; a != b).
+        Every pair starts enabled but an SRDF's disabled pairs; links joined
+        by a joint are not skipped unless disabled."""
+        lib.opx_linkset_set_pair_enabled(self, self._link_index(a), self._link_index(b),
+                                         int(bool(enabled)))
+
+    def pair_enabled(self, a, b):
+        """True when self-collision queries check links a and b."""
+        enabled = ctypes.c_int32()
+        lib.opx_linkset_get_pair_enabled(self, self._link_index(a), self._link_index(b),
+                                         ctypes.byref(enabled))
+        return bool(enabled.value)
+
     def set_poses(self, poses):
         """Every link's pose in the map frame: an (N, 7) array (x y z qx qy
         qz qw; a float64 array is read in place by row stride) or (N, 3)

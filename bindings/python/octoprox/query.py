@@ -1,11 +1,12 @@
-"""Query contexts (opx_query): collision, distance and path queries."""
+"""Query contexts (opx_query): collision, distance and path queries, and
+self-collision."""
 
 import numpy as np
 
 from . import _structs as s
 from . import batch as _batch
-from ._arrays import (CONTACT_DTYPE, COST_BOX_DTYPE, box_array, invalid, pose_array, pose_strides,
-                      read_array)
+from ._arrays import (CONTACT_DTYPE, COST_BOX_DTYPE, SELF_CONTACT_DTYPE, box_array, invalid,
+                      pose_array, pose_strides, read_array)
 from ._handle import Handle
 from ._library import init_struct, lib
 from .linkset import LinkSet
@@ -24,6 +25,11 @@ def _check_operands(tree, links, where):
                         f"{type(tree).__name__} and {type(links).__name__}")
 
 
+def _check_links(links, where):
+    if not isinstance(links, LinkSet):
+        raise TypeError(f"{where}: expected a LinkSet, got {type(links).__name__}")
+
+
 class Query(Handle):
     """A query context: use one per thread.  ``Query(engine="amortized")``
     or any field of opx_query_options as a keyword.
@@ -38,7 +44,7 @@ class Query(Handle):
         engine = _ENGINES.get(engine, engine)
         opts = init_struct(s.QueryOptions, engine=engine, **options)
         super().__init__(lambda out: lib.opx_query_create(opts, out))
-        self._contact_count = self._cost_box_count = 0
+        self._contact_count = self._cost_box_count = self._self_contact_count = 0
 
     @property
     def stats(self):
@@ -103,6 +109,43 @@ class Query(Handle):
         lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0], pose_stride,
                            waypoint_stride, req, out)
         self._cost_box_count = out.cost_box_count
+        return out
+
+    def self_collide(self, links, **request):
+        """Does the link set collide with itself at its current poses?  Every
+        pair of two enabled links with shapes is checked but the disabled
+        pairs (an SRDF's, LinkSet.set_pair_enabled); paddings included.
+        Keywords are fields of opx_self_collision_request: max_contacts (0:
+        yes/no; 1, the default: the first contact; N; 0xFFFFFFFF: all) and
+        compute_penetration.  Returns the SelfCollisionResult (collided,
+        contact_count, truncated, link_pairs, narrow_tests); self_contacts()
+        gives the contacts."""
+        _check_links(links, "Query.self_collide")
+        req = init_struct(s.SelfCollisionRequest, **request)
+        out = init_struct(s.SelfCollisionResult)
+        self._self_contact_count = 0
+        lib.opx_query_self_collide(self, links, req, out)
+        self._self_contact_count = out.contact_count
+        return out
+
+    def self_contacts(self):
+        """The contacts of the last self_collide, a structured array with the
+        fields of opx_self_contact: link_a < link_b, shape_a, shape_b, and
+        with compute_penetration depth, normal (moving link_a by -depth *
+        normal separates the pair) and position (map frame)."""
+        return self._rows(lib.opx_query_get_self_contact, SELF_CONTACT_DTYPE,
+                          self._self_contact_count)
+
+    def self_distance(self, links, **request):
+        """The minimum distance between the link set's checked pairs of links
+        (paddings included), with the two links and shapes and the witness
+        points point_on_a, point_on_b (map frame).  Keywords: cutoff (0:
+        none; beyond it found = 0 and distance = cutoff) and
+        signed_distance (overlap as minus the deepest penetration)."""
+        _check_links(links, "Query.self_distance")
+        req = init_struct(s.SelfDistanceRequest, **request)
+        out = init_struct(s.SelfDistanceResult)
+        lib.opx_query_self_distance(self, links, req, out)
         return out
 
     def check_configurations(self, tree, robot, q, threads=1, self_collision=False, base_pose=None,

@@ -37,7 +37,8 @@ class RobotModel:
         """A link set from a URDF file: one link per <link> (same names, file
         order), one shape per <collision>, every joint at 0, the root at the
         map origin.  package_dirs resolve package:// mesh names: folders, or
-        "NAME=DIR" entries; srdf: a file whose disabled pairs are read."""
+        "NAME=DIR" entries; srdf: a file whose disabled pairs self-collision
+        queries skip."""
         options, _keep = _urdf_options(package_dirs, base_dir, srdf)
         return cls._from(lambda out: lib.opx_linkset_load_urdf_file(os.fsencode(path),
                                                                     options, out))
@@ -90,9 +91,24 @@ class RobotModel:
         """The joint positions in model order, as FK uses them."""
         return read_array(lib.opx_linkset_get_joint_positions, self)
 
+    def disable_never_colliding_pairs(self, samples=10000, seed=1, also_always_colliding=False):
+        """Disables every pair of links that never collides over `samples`
+        random configurations (each moving joint uniform within its
+        limits), as MoveIt's setup assistant does; with
+        also_always_colliding=True also the pairs colliding in every sample
+        (links meeting at their joint).  Poses and joints do not change.
+        Returns (never, always): how many pairs each rule disabled."""
+        options = init_struct(s.PairSamplingOptions, samples=samples, seed=seed,
+                              also_always_colliding=also_always_colliding)
+        never, always = ctypes.c_uint32(), ctypes.c_uint32()
+        lib.opx_linkset_disable_never_colliding_pairs(self, options, ctypes.byref(never),
+                                                      ctypes.byref(always))
+        return never.value, always.value
+
     @property
     def disabled_pairs(self):
-        """The SRDF <disable_collisions> pairs as (link, link) indices."""
+        """The SRDF <disable_collisions> pairs as (link, link) indices, as
+        the file lists them (self-collision skips them; see pair_enabled)."""
         count, a, b = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_uint32()
         lib.opx_linkset_get_disabled_pair_count(self, ctypes.byref(count))
         pairs = []
