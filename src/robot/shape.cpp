@@ -96,8 +96,25 @@ Convex PlacedShape::triangle(int32_t index) const {
     return c;
 }
 
+namespace {
+
+// A sphere is a point core and a radius: its placement needs the centre
+// alone (no rotation is composed; its axes are never read), and it is
+// placed for every robot pose of a sphere-based robot.
+void place_sphere(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled, PlacedShape &out) {
+    out.def = &def;
+    out.kind = ShapeKind::kSphere;
+    out.inflation = padding + def.radius;
+    out.core.kind = ConvexKind::kPoint;
+    out.core.center = link_pose.apply(def.local.translation);
+    out.box = enabled ? Aabb::from_center(out.core.center, Vec3::Constant(out.inflation)) : Aabb();
+}
+
+}  // namespace
+
 void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled,
                  PlacedShape &out) {
+    if (def.kind == ShapeKind::kSphere) return place_sphere(def, link_pose, padding, enabled, out);
     const Eigen::Matrix3d rotation = link_pose.rotation * def.local.rotation;
     const Vec3 center = link_pose.apply(def.local.translation);
     out.def = &def;
