@@ -7,7 +7,9 @@
 //! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses), built by
 //!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
-//!   [`Query::path`].
+//!   [`Query::path`]; the robot against itself: [`Query::self_collide`],
+//!   [`Query::self_distance`] over the pairs [`LinkSet::set_pair_enabled`]
+//!   (and an SRDF) leave enabled.
 //! * [`read_point_cloud`]: PCD and PLY files as points (the library's
 //!   readers).
 //!
@@ -30,6 +32,7 @@ mod octree;
 mod points;
 mod query;
 mod robot;
+mod self_collision;
 
 pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
 pub use cloud::{read_point_cloud, PointCloud, PointCloudInfo};
@@ -59,6 +62,12 @@ pub type Contact = sys::opx_contact;
 pub type CostBox = sys::opx_cost_box;
 pub type DistanceRequest = sys::opx_distance_request;
 pub type DistanceResult = sys::opx_distance_result;
+pub type SelfCollisionRequest = sys::opx_self_collision_request;
+pub type SelfCollisionResult = sys::opx_self_collision_result;
+pub type SelfContact = sys::opx_self_contact;
+pub type SelfDistanceRequest = sys::opx_self_distance_request;
+pub type SelfDistanceResult = sys::opx_self_distance_result;
+pub type PairSamplingOptions = sys::opx_pair_sampling_options;
 pub type PathRequest = sys::opx_path_request;
 pub type PathResult = sys::opx_path_result;
 pub type BatchRequest = sys::opx_batch_request;

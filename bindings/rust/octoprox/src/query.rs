@@ -1,4 +1,5 @@
-//! Query contexts (`opx_query`): collision, distance and path queries.
+//! Query contexts (`opx_query`): collision, distance and path queries
+//! (self-collision: `self_collision.rs`).
 use crate::error::{check, Result};
 use crate::{check_version, sys, CollisionRequest, CollisionResult, Contact, CostBox,
             DistanceRequest, DistanceResult, LinkSet, Octree, PathRequest, PathResult, Pose,
@@ -13,6 +14,7 @@ pub struct Query {
     raw: *mut sys::opx_query,
     contact_count: usize,
     cost_box_count: usize,
+    pub(crate) self_contact_count: usize,  // of the last self-collision query
 }
 
 // SAFETY: a context is not tied to the thread that made it; it needs
@@ -35,7 +37,11 @@ impl Query {
         let mut raw = ptr::null_mut();
         // SAFETY: options and out are valid.
         check(unsafe { sys::opx_query_create(options, &mut raw) })?;
-        Ok(Query { raw, contact_count: 0, cost_box_count: 0 })
+        Ok(Query { raw, contact_count: 0, cost_box_count: 0, self_contact_count: 0 })
+    }
+
+    pub(crate) fn as_raw(&self) -> *const sys::opx_query {
+        self.raw
     }
 
     pub(crate) fn as_raw_mut(&mut self) -> *mut sys::opx_query {

@@ -17,7 +17,8 @@ pub struct UrdfOptions {
     /// Base of relative mesh paths (default: the URDF file's folder, or the
     /// current directory for a string).
     pub base_dir: Option<PathBuf>,
-    /// An SRDF whose `<disable_collisions>` pairs are read.
+    /// An SRDF whose `<disable_collisions>` pairs are read: self-collision
+    /// queries skip them.
     pub srdf_path: Option<PathBuf>,
 }
 
