@@ -26,6 +26,7 @@ void JointTree::build(std::vector<Joint> joints, size_t link_count, uint32_t roo
     check_links(source);
     order_joints(source);
     resolve_mimics(source);
+    classify_motions();
     commanded_.assign(joints_.size(), 0.0);
     positions_.assign(joints_.size(), 0.0);
     update_positions();
@@ -128,7 +129,7 @@ void JointTree::link_poses(const Pose &base, const double *positions, Pose *pose
     poses[root_link_] = base;
     for (uint32_t j : order_) {
         const Joint &joint = joints_[j];
-        compose(joint, poses[joint.parent_link], positions[j], poses[joint.child_link]);
+        compose(j, poses[joint.parent_link], positions[j], poses[joint.child_link]);
     }
 }
 
@@ -141,17 +142,49 @@ void JointTree::update_link_poses(const Pose &base, bool base_moved, const doubl
         // Bit for bit: -0.0 and 0.0 may give poses differing in a zero's sign.
         const bool changed = moved[joint.parent_link] != 0 || std::memcmp(&positions[j], &previous[j], sizeof(double)) != 0;
         moved[joint.child_link] = changed ? 1 : 0;
-        if (changed) compose(joint, poses[joint.parent_link], positions[j], poses[joint.child_link]);
+        if (changed) compose(j, poses[joint.parent_link], positions[j], poses[joint.child_link]);
     }
 }
 
-void JointTree::compose(const Joint &joint, const Pose &parent, double q, Pose &child) {
-    child.rotation = parent.rotation * joint.origin.rotation;
+void JointTree::classify_motions() {
+    const size_t n = joints_.size();
+    origin_turns_.assign(n, 1);
+    axis_index_.assign(n, -1);
+    axis_sign_.assign(n, 1.0);
+    for (size_t j = 0; j < n; ++j) {
+        const Joint &joint = joints_[j];
+        origin_turns_[j] = joint.origin.rotation == Eigen::Matrix3d::Identity() ? 0 : 1;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double along = joint.axis[axis];
+            if ((along == 1.0 || along == -1.0) && joint.axis.squaredNorm() == 1.0)
+                axis_index_[j] = static_cast<int8_t>(axis), axis_sign_[j] = along;
+        }
+    }
+}
+
+namespace {
+
+// rotation = rotation * (a turn of angle q about frame axis `axis`): only
+// the two other columns change.
+void turn_about_axis(Eigen::Matrix3d &rotation, int axis, double q) {
+    const double c = std::cos(q), s = std::sin(q);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const Vec3 col_a = rotation.col(a), col_b = rotation.col(b);
+    rotation.col(a) = c * col_a + s * col_b;
+    rotation.col(b) = c * col_b - s * col_a;
+}
+
+}  // namespace
+
+void JointTree::compose(uint32_t j, const Pose &parent, double q, Pose &child) const {
+    const Joint &joint = joints_[j];
+    child.rotation = origin_turns_[j] ? Eigen::Matrix3d(parent.rotation * joint.origin.rotation) : parent.rotation;
     child.translation = parent.apply(joint.origin.translation);
     switch (joint.type) {
     case JointType::kRevolute:
     case JointType::kContinuous:
-        child.rotation = child.rotation * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+        if (axis_index_[j] >= 0) turn_about_axis(child.rotation, axis_index_[j], axis_sign_[j] * q);
+        else child.rotation = child.rotation * Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
         break;
     case JointType::kPrismatic: child.translation += child.rotation * (q * joint.axis); break;
     default: break;

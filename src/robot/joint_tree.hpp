@@ -79,7 +79,8 @@ public:
 
 private:
     // child = parent * origin * motion(q)
-    static void compose(const Joint &joint, const Pose &parent, double q, Pose &child);
+    void compose(uint32_t j, const Pose &parent, double q, Pose &child) const;
+    void classify_motions();
     void check_links(const std::string &source) const;
     void order_joints(const std::string &source);
     void resolve_mimics(const std::string &source);
@@ -91,6 +92,12 @@ private:
     std::vector<uint32_t> master_;     // per joint: the non-mimic joint it follows
     std::vector<double> multiplier_, offset_;  // composed along mimic chains
     std::vector<double> commanded_, positions_;
+    // Per joint, what compose() may skip: an origin without rotation, and
+    // an axis along x, y or z (0, 1, 2; -1: another), with its sign: most
+    // URDF joints turn about a frame axis, a rotation of two columns.
+    std::vector<uint8_t> origin_turns_;
+    std::vector<int8_t> axis_index_;
+    std::vector<double> axis_sign_;
     size_t link_count_ = 0;
     uint32_t root_link_ = kNoIndex;
 };
