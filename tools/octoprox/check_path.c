@@ -49,6 +49,7 @@ static int check_waypoints(const check_context *c, const opx_linkset *links, con
     if (collided == NULL) return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's answers");
     request.unknown_policy = c->unknown_policy;
     request.max_threads = c->threads;
+    request.self_collision = c->want_self;
     status = opx_query_check_configurations(c->query, c->map, links, rows->values, csv->waypoint_count,
                                             rows->joint_count, 0, &c->robot->base_pose, 1, 0, &request, collided,
                                             NULL, csv->waypoint_count);
@@ -76,6 +77,7 @@ static int check_motions(const check_context *c, const opx_linkset *links, const
     request.unknown_policy = c->unknown_policy;
     request.resolution = c->resolution;
     request.max_threads = c->threads;
+    request.self_collision = c->want_self;
     status = motions == 0 ? OPX_OK
                           : opx_query_check_motions(c->query, c->map, links, rows->values,
                                                     rows->values + rows->joint_count, motions, rows->joint_count, 0,

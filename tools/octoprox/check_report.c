@@ -50,13 +50,15 @@ void check_print_head(const check_context *c) {
     opx_linkset_get_link_count(c->links, &links);
     opx_linkset_get_disabled_pair_count(c->links, &disabled_pairs);
     if (!c->json) {
-        printf("map        %s\nrobot      %s (%u links)\n", c->map_path, c->urdf_path, links);
+        printf("map        %s\nrobot      %s (%u links)\n", c->map_path ? c->map_path : "none (--self only)",
+               c->urdf_path, links);
         print_robot_options_text(c->robot, disabled_pairs);
         printf("unknown    %s\n", policy);
         return;
     }
     fputs("{\n  \"map\": ", stdout);
-    json_string(stdout, c->map_path);
+    if (c->map_path != NULL) json_string(stdout, c->map_path);
+    else fputs("null", stdout);
     fputs(",\n  \"urdf\": ", stdout);
     json_string(stdout, c->urdf_path);
     printf(",\n  \"links\": %u", links);

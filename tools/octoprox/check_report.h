@@ -8,13 +8,13 @@
 #define CHECK_MAX_LISTED 10 /* contacts and cost boxes listed */
 
 typedef struct check_context {
-    const char *map_path, *urdf_path, *path_file;
+    const char *map_path, *urdf_path, *path_file;  /* map_path NULL: --self without a map */
     const robot_args *robot;
     const opx_octree *map;
     const opx_linkset *links;
     opx_query *query;
     int32_t unknown_policy;
-    int want_distance, want_cost, json;
+    int want_distance, want_cost, want_self, json;
     double resolution; /* --path: joint step between checked configurations (rad or m) */
     uint32_t threads;  /* --path: threads of the batch calls (0: every core) */
 } check_context;
@@ -29,8 +29,8 @@ typedef struct check_motions_report {
 const char *check_class_name(int32_t cell_class);
 const char *check_link_name(const opx_linkset *links, uint32_t link);
 
-/* The head of the report (map, robot, its padding, disabled links and
- * SRDF, policy); JSON: opens the object. */
+/* The head of the report (map or none, robot, its padding, disabled links
+ * and SRDF, policy); JSON: opens the object. */
 void check_print_head(const check_context *c);
 /* Contacts of the last collision query: count, colliding links, a few. */
 void check_print_contacts(const check_context *c, const opx_collision_result *r);

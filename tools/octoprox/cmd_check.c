@@ -1,6 +1,7 @@
 /* octoprox check MAP --urdf ...: collision, distance and cost of a robot. */
 #include "check_path.h"
 #include "check_report.h"
+#include "check_self.h"
 #include "cli.h"
 #include "commands.h"
 #include "robot_args.h"
@@ -9,18 +10,24 @@
 #include <string.h>
 
 static const char kHelp[] =
-    "usage: octoprox check MAP.bt|MAP.ot --urdf ROBOT.urdf [--package-dir DIR]...\n"
+    "usage: octoprox check [MAP.bt|MAP.ot] --urdf ROBOT.urdf [--package-dir DIR]...\n"
     "                      [--srdf ROBOT.srdf] [--joints name=value,...]\n"
     "                      [--base-pose POSE] [--padding M] [--disable-link NAME]...\n"
-    "                      [--distance] [--cost] [--unknown free|occupied]\n"
+    "                      [--self] [--distance] [--cost] [--unknown free|occupied]\n"
     "                      [--path FILE.csv [--resolution R] [--threads N]] [--json]\n"
     "\n"
     "Checks one robot configuration (or a path of them) against the map:\n"
     "collision with the occupied cells (every contact's link is listed), and\n"
     "optionally the minimum distance and the cost of uncertain and unknown\n"
     "space the robot overlaps (probability x volume, m^3; paper IV.C).\n"
+    "With --self, also the robot against itself; the map may then be left out.\n"
     "\n"
     "options:\n"
+    "  --self                also self-collision: every pair of links but the\n"
+    "                        SRDF's disabled pairs (adjacent links are not skipped\n"
+    "                        unless the SRDF lists them); with --distance also the\n"
+    "                        self-distance; with --path every waypoint and motion\n"
+    "                        against itself too (without a map: only itself)\n"
     "  --distance            also the minimum distance to an obstacle (metres)\n"
     "  --cost                also the cost of uncertain/unknown space\n"
     "  --unknown free|occupied\n"
@@ -46,12 +53,17 @@ static const char kHelp[] =
     "                        distance, link, point_on_link, point_on_cell} with\n"
     "                        --distance; cost {total, boxes_found, boxes [{link,\n"
     "                        cell_class, min, max, probability, cost}]} with\n"
-    "                        --cost; collided, query_ms\n"
+    "                        --cost; self {checked_pairs, collided, contact_count,\n"
+    "                        contacts [{link_a, link_b, depth, position}]} and\n"
+    "                        self_distance {found, distance, link_a, link_b,\n"
+    "                        point_on_a, point_on_b} with --self (one\n"
+    "                        configuration); collided, query_ms\n"
     "  -h, --help            this help\n"
     "\n"
     "%s"
     "\n"
-    "exit codes: 0 no collision, 1 collision (with --path: some waypoint or motion),\n"
+    "exit codes: 0 no collision, 1 collision with the map or (--self) itself (with\n"
+    "--path: some waypoint or motion),\n"
     "2 usage error, 3 a file cannot be read or is malformed, 4 internal error\n";
 
 typedef struct check_args {
@@ -67,6 +79,7 @@ static int parse_option(cli_args *args, void *context) {
     if (cli_flag(args, "--json")) a->context.json = 1;
     else if (cli_flag(args, "--distance")) a->context.want_distance = 1;
     else if (cli_flag(args, "--cost")) a->context.want_cost = 1;
+    else if (cli_flag(args, "--self")) a->context.want_self = 1;
     else if ((got = cli_value(args, "--unknown")) != 0) {
         if (got > 0 && strcmp(args->value, "free") == 0) a->context.unknown_policy = OPX_UNKNOWN_FREE;
         else if (got > 0 && strcmp(args->value, "occupied") == 0) a->context.unknown_policy = OPX_UNKNOWN_OCCUPIED;
@@ -99,7 +112,9 @@ static int parse_arguments(int argc, char **argv, check_args *a) {
     robot_args_init(&a->robot);
     code = cli_walk_map_arguments(argc, argv, "check", kHelp, kRobotOptionsHelp, &a->map, parse_option, a);
     if (code >= 0) return code;
-    if (a->map == NULL) return cli_usage("check", "no map file given");
+    if (a->map == NULL && !a->context.want_self) return cli_usage("check", "no map file given (or --self)");
+    if (a->map == NULL && (a->context.path_file || a->context.want_cost))
+        return cli_usage("check", "--path and --cost need a map file");
     if (a->robot.urdf == NULL) return cli_usage("check", "no robot given (--urdf ROBOT.urdf)");
     a->context.map_path = a->map;
     a->context.urdf_path = a->robot.urdf;
@@ -107,7 +122,8 @@ static int parse_arguments(int argc, char **argv, check_args *a) {
     return -1;
 }
 
-static int check_one(check_context *c, int *collided) {
+/* The robot against the map: contacts, cost, distance. */
+static int check_map(check_context *c, int *collided) {
     opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
     opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     opx_distance_request distance_request = OPX_DISTANCE_REQUEST_INIT;
@@ -128,6 +144,14 @@ static int check_one(check_context *c, int *collided) {
     if (status != OPX_OK) return cli_library_fail("check", status, "the distance query");
     check_print_distance(c, &distance);
     return -1;
+}
+
+/* One configuration: the map (when given), then the robot itself (--self). */
+static int check_one(check_context *c, int *collided) {
+    int self_collided = 0, code = c->map != NULL ? check_map(c, collided) : -1;
+    if (code < 0 && c->want_self) code = check_self(c, &self_collided);
+    *collided = *collided || self_collided;
+    return code;
 }
 
 static int run(check_args *a, opx_octree *map, opx_linkset *links) {
@@ -153,7 +177,7 @@ int cmd_check(int argc, char **argv) {
     opx_status status;
     int code = parse_arguments(argc, argv, &a);
     if (code >= 0) return code;
-    status = opx_octree_load_file(a.map, NULL, &map);
+    status = a.map != NULL ? opx_octree_load_file(a.map, NULL, &map) : OPX_OK;
     if (status != OPX_OK) return cli_library_fail("check", status, "loading the map %s", a.map);
     code = robot_load(&a.robot, "check", &links);
     if (code < 0) code = run(&a, map, links);
