@@ -21,8 +21,10 @@
  *
  * Cost: a broad phase over the links' bounding boxes (sort and sweep), then
  * the shapes' boxes, then the exact tests; meshes are walked through their
- * triangle trees.  Without contacts (max_contacts 0 or 1) the check stops
- * at the first touching pair.  See docs/performance.md.
+ * triangle trees without being placed.  Without contacts (max_contacts 0
+ * or 1) the check stops at the first touching pair.  The PR2 with its
+ * SRDF at random configurations: about 22 us per check on one core, 1 ms
+ * per distance (which places the meshes it measures).
  */
 #ifndef OCTOPROX_SELF_COLLISION_H
 #define OCTOPROX_SELF_COLLISION_H
@@ -170,7 +172,8 @@ OPX_API opx_status opx_pair_sampling_options_init(opx_pair_sampling_options *opt
  * are tested; disabled ones stay disabled.  The link set's poses and joint
  * positions do not change (a copy is posed).  Sampling can miss a rare
  * colliding configuration: more samples, fewer misses.  The set must come
- * from URDF (else OPX_ERROR_UNSUPPORTED).  options may be NULL (defaults);
+ * from URDF (else OPX_ERROR_UNSUPPORTED).  Pairs with a link without
+ * shapes are left as they are.  options may be NULL (defaults);
  * *out_never and *out_always (each may be NULL) get how many pairs were
  * disabled for never and for always colliding.  Costs about samples x
  * (FK + one self-collision check of every pair).
