@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "pipelines.hpp"
 #include "sphere_rows.hpp"
@@ -22,10 +23,12 @@ size_t differences(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
     return n;
 }
 
+// FCL always checks the robot against itself; OctoProx when kSelfCollision.
 Row row(const Robot &robot, const Scene &scene, const char *pipeline, const Timing &t) {
+    const bool self = kSelfCollision || std::string(pipeline) == "fcl";
     return Row{robot.name, scene.name, pipeline, t.us_per_configuration,
                {{"configurations", double(t.collided.size())}, {"collided", double(count_of(t.collided))},
-                {"fastest_round_us", t.fastest_us}}};
+                {"fastest_round_us", t.fastest_us}, {"self_collision", self ? 1.0 : 0.0}}};
 }
 
 Row motion_row(const Robot &robot, const Scene &scene, const char *pipeline, const MotionTiming &t) {
@@ -33,7 +36,7 @@ Row motion_row(const Robot &robot, const Scene &scene, const char *pipeline, con
                {{"motions", double(t.motions)}, {"collided", double(t.collided)},
                 {"motions_per_second", t.motions_per_second},
                 {"configurations_per_motion", t.configurations_per_motion},
-                {"resolution_rad", kMotionResolution}}};
+                {"resolution_rad", kMotionResolution}, {"self_collision", kSelfCollision ? 1.0 : 0.0}}};
 }
 
 bool check_agreement(const Robot &robot, const Scene &scene, const Timing &single, const Timing &one,
