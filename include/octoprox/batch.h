@@ -23,7 +23,9 @@
  *
  * Threads: max_threads workers split the configurations (or motions); 1
  * (the default) runs on the caller's thread, 0 takes one per hardware
- * thread.  Each worker has its own engine and scratch memory, kept in the
+ * thread.  The call starts its threads each time (some tens of
+ * microseconds): worth it from a few dozen configurations of a large
+ * robot, or a few hundred of a small one.  Each worker has its own engine and scratch memory, kept in the
  * opx_query between calls (with OPX_ENGINE_AMORTIZED, each worker builds
  * its own trees of a frame once), so a warm call allocates nothing per
  * configuration.  These calls leave the query's results (contacts, cost
