@@ -157,31 +157,46 @@ typedef struct opx_pair_sampling_options {
      * at their joint: MoveIt's "Adjacent" and "Always" pairs).  0 (default):
      * only the pairs that never collide. */
     int32_t also_always_colliding;
-    uint32_t reserved0;
+    /* 1: also disable the pairs that collide at the link set's current
+     * poses (MoveIt's "Default" pairs, with the robot at its default
+     * configuration).  0 (default): no. */
+    int32_t also_colliding_now;
 } opx_pair_sampling_options;
 
 #define OPX_PAIR_SAMPLING_OPTIONS_INIT {sizeof(opx_pair_sampling_options), 10000, 1, 0, 0}
 OPX_API opx_status opx_pair_sampling_options_init(opx_pair_sampling_options *options, size_t size);
+
+/* How many pairs each rule disabled (a pair counts once, for the first
+ * rule in this order that disabled it). */
+typedef struct opx_pair_sampling_result {
+    uint32_t struct_size;
+    uint32_t now;            /* colliding at the current poses (also_colliding_now) */
+    uint32_t never;          /* colliding in no sample */
+    uint32_t always;         /* colliding in every sample (also_always_colliding) */
+} opx_pair_sampling_result;
+
+#define OPX_PAIR_SAMPLING_RESULT_INIT {sizeof(opx_pair_sampling_result), 0, 0, 0}
+OPX_API opx_status opx_pair_sampling_result_init(opx_pair_sampling_result *result, size_t size);
 
 /*
  * Disables every pair of links that never collides over `samples` random
  * configurations: each moving joint uniform within its limits (continuous
  * joints, and revolute joints without limits, over [-pi, pi]; prismatic
  * joints without limits stay at 0; mimic joints follow their master), with
- * every link enabled and the current paddings.  Only pairs still enabled
- * are tested; disabled ones stay disabled.  The link set's poses and joint
- * positions do not change (a copy is posed).  Sampling can miss a rare
- * colliding configuration: more samples, fewer misses.  The set must come
- * from URDF (else OPX_ERROR_UNSUPPORTED).  Pairs with a link without
- * shapes are left as they are.  options may be NULL (defaults);
- * *out_never and *out_always (each may be NULL) get how many pairs were
- * disabled for never and for always colliding.  Costs about samples x
- * (FK + one self-collision check of every pair).
+ * every link enabled and the current paddings; and, when asked, the pairs
+ * colliding now or in every sample, as MoveIt's setup assistant does.
+ * Only pairs still enabled are tested; disabled ones stay disabled, and
+ * pairs with a link without shapes are left as they are.  The link set's
+ * poses and joint positions do not change (a copy is posed).  Sampling can
+ * miss a rare colliding configuration: more samples, fewer misses.  The
+ * set must come from URDF (else OPX_ERROR_UNSUPPORTED).  options may be
+ * NULL (defaults); out_result (may be NULL) gets how many pairs each rule
+ * disabled.  Costs about samples x (FK + a self-collision check of the
+ * remaining pairs): 0.2 to 2 ms per sample for the PR2.
  */
 OPX_API opx_status opx_linkset_disable_never_colliding_pairs(opx_linkset *links,
                                                              const opx_pair_sampling_options *options,
-                                                             uint32_t *out_never,
-                                                             uint32_t *out_always);
+                                                             opx_pair_sampling_result *out_result);
 
 #ifdef __cplusplus
 }

@@ -90,6 +90,10 @@ OPX_API opx_status opx_pair_sampling_options_init(opx_pair_sampling_options *opt
                        "options");
 }
 
+OPX_API opx_status opx_pair_sampling_result_init(opx_pair_sampling_result *result, size_t size) {
+    return init_struct(__func__, result, size, opx_pair_sampling_result(OPX_PAIR_SAMPLING_RESULT_INIT), "result");
+}
+
 OPX_API opx_status opx_query_self_collide(opx_query *query, const opx_linkset *links,
                                           const opx_self_collision_request *request,
                                           opx_self_collision_result *out_result) {
@@ -160,9 +164,10 @@ OPX_API opx_status opx_linkset_get_pair_enabled(const opx_linkset *links, uint32
 
 OPX_API opx_status opx_linkset_disable_never_colliding_pairs(opx_linkset *links,
                                                              const opx_pair_sampling_options *options,
-                                                             uint32_t *out_never, uint32_t *out_always) {
+                                                             opx_pair_sampling_result *out_result) {
     return guard(__func__, [&] {
         require_pointer(links, "links");
+        if (out_result != nullptr) require_out_struct(out_result, "out_result");
         opx_pair_sampling_options merged = OPX_PAIR_SAMPLING_OPTIONS_INIT;
         read_versioned(options, merged, "options");
         if (links->robot.joints.empty())
@@ -170,9 +175,11 @@ OPX_API opx_status opx_linkset_disable_never_colliding_pairs(opx_linkset *links,
         PairSamplingSettings settings;
         settings.samples = merged.samples, settings.seed = merged.seed;
         settings.also_always = merged.also_always_colliding != 0;
+        settings.also_now = merged.also_colliding_now != 0;
         const PairSamplingOutcome outcome = disable_never_colliding_pairs(links->links, links->robot.joints, settings);
-        if (out_never != nullptr) *out_never = outcome.never;
-        if (out_always != nullptr) *out_always = outcome.always;
+        opx_pair_sampling_result result = OPX_PAIR_SAMPLING_RESULT_INIT;
+        result.now = outcome.now, result.never = outcome.never, result.always = outcome.always;
+        if (out_result != nullptr) write_versioned(out_result, result, "out_result");
         return OPX_OK;
     });
 }

@@ -27,6 +27,7 @@ int opx_init_macros_compile(void) {
     const opx_self_distance_request self_distance_request = OPX_SELF_DISTANCE_REQUEST_INIT;
     const opx_self_distance_result self_distance_result = OPX_SELF_DISTANCE_RESULT_INIT;
     const opx_pair_sampling_options pair_sampling = OPX_PAIR_SAMPLING_OPTIONS_INIT;
+    const opx_pair_sampling_result pair_sampling_result = OPX_PAIR_SAMPLING_RESULT_INIT;
     const opx_batch_request batch_request = OPX_BATCH_REQUEST_INIT;
     const opx_motion_request motion_request = OPX_MOTION_REQUEST_INIT;
     const opx_motion_result motion_result = OPX_MOTION_RESULT_INIT;
@@ -47,6 +48,7 @@ int opx_init_macros_compile(void) {
            self_distance_request.struct_size == sizeof self_distance_request &&
            self_distance_result.struct_size == sizeof self_distance_result &&
            pair_sampling.struct_size == sizeof pair_sampling &&
+           pair_sampling_result.struct_size == sizeof pair_sampling_result &&
            batch_request.struct_size == sizeof batch_request &&
            motion_request.struct_size == sizeof motion_request &&
            motion_result.struct_size == sizeof motion_result &&

@@ -170,19 +170,22 @@ static void srdf_pairs_start_disabled(void **state) {
 }
 
 /* The arm always lies on the base; the tool (z >= 0.32) never meets the
- * wheel (z <= 0.13).
- * The helper leaves poses and joints alone and is repeatable. */
+ * wheel (z <= 0.13).  The helper leaves poses and joints alone and is
+ * repeatable. */
 static void sampling_disables_never_and_always(void **state) {
     (void)state;
     opx_linkset *robot = load_test_robot();
-    opx_linkset *again = NULL;
+    opx_linkset *again = NULL, *now = NULL;
     assert_ok(opx_linkset_clone(robot, &again));
+    assert_ok(opx_linkset_clone(robot, &now));
     const opx_pose before = get_pose(robot, L_TOOL);
     opx_pair_sampling_options options = OPX_PAIR_SAMPLING_OPTIONS_INIT;
+    opx_pair_sampling_result result = OPX_PAIR_SAMPLING_RESULT_INIT;
     options.samples = 300;
-    uint32_t never = 0, always = 0;
-    assert_ok(opx_linkset_disable_never_colliding_pairs(robot, &options, &never, &always));
-    assert_int_equal(always, 0);
+    assert_ok(opx_linkset_disable_never_colliding_pairs(robot, &options, &result));
+    const uint32_t never = result.never;
+    assert_int_equal(result.always, 0);
+    assert_int_equal(result.now, 0);
     assert_true(never >= 1);
     assert_int_equal(pair_enabled(robot, L_BASE, L_ARM), 1);
     assert_int_equal(pair_enabled(robot, L_TOOL, L_WHEEL), 0);
@@ -191,14 +194,22 @@ static void sampling_disables_never_and_always(void **state) {
     assert_memory_equal(&before, &after, sizeof before);
 
     options.also_always_colliding = 1;
-    uint32_t never_again = 0;
-    assert_ok(opx_linkset_disable_never_colliding_pairs(again, &options, &never_again, &always));
-    assert_int_equal(never_again, never);
-    assert_true(always >= 1);
+    assert_ok(opx_linkset_disable_never_colliding_pairs(again, &options, &result));
+    assert_int_equal(result.never, never);
+    assert_true(result.always >= 1);
     assert_int_equal(pair_enabled(again, L_BASE, L_ARM), 0);
     for (uint32_t a = 0; a < TEST_LINKS; ++a)  /* the same seed: the same never-colliding pairs */
         for (uint32_t b = a + 1; b < TEST_LINKS; ++b)
             if (!pair_enabled(robot, a, b)) assert_int_equal(pair_enabled(again, a, b), 0);
+
+    /* Colliding now (the arm on the base, at the zero configuration): first. */
+    options.also_always_colliding = 0, options.also_colliding_now = 1;
+    assert_ok(opx_linkset_disable_never_colliding_pairs(now, &options, NULL));
+    assert_int_equal(pair_enabled(now, L_BASE, L_ARM), 0);
+    opx_query *query = new_query();
+    assert_int_equal(self_collide(query, now, 1).collided, 0);
+    opx_query_destroy(query);
+    opx_linkset_destroy(now);
     opx_linkset_destroy(again);
     opx_linkset_destroy(robot);
 }
@@ -272,13 +283,17 @@ static void pairs_reject_bad_links(void **state) {
     assert_int_equal(pair_enabled(links, 0, 1), 1); /* nothing changed */
     const char *sample = "opx_linkset_disable_never_colliding_pairs";
     expect_failure(OPX_ERROR_UNSUPPORTED, sample, "joints",
-                   opx_linkset_disable_never_colliding_pairs(links, NULL, NULL, NULL));
+                   opx_linkset_disable_never_colliding_pairs(links, NULL, NULL));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, sample, "links",
-                   opx_linkset_disable_never_colliding_pairs(NULL, NULL, NULL, NULL));
+                   opx_linkset_disable_never_colliding_pairs(NULL, NULL, NULL));
     opx_pair_sampling_options options = OPX_PAIR_SAMPLING_OPTIONS_INIT;
     options.struct_size = 0;
     expect_failure(OPX_ERROR_VERSION, sample, "options",
-                   opx_linkset_disable_never_colliding_pairs(links, &options, NULL, NULL));
+                   opx_linkset_disable_never_colliding_pairs(links, &options, NULL));
+    opx_pair_sampling_result result = OPX_PAIR_SAMPLING_RESULT_INIT;
+    result.struct_size = 0;
+    expect_failure(OPX_ERROR_VERSION, sample, "out_result",
+                   opx_linkset_disable_never_colliding_pairs(links, NULL, &result));
     opx_linkset_destroy(links);
 }
 

@@ -18,9 +18,10 @@ from ._library import HEADER_VERSION, lib
 from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionResult, Contact,
                        CostBox, DepthImage, DistanceRequest, DistanceResult, InsertOptions,
                        InsertReport, JointInfo, Leaf, OctreeOptions, OctreeStats,
-                       PairSamplingOptions, PathRequest, PathResult, PointCloudInfo, Pose,
-                       QueryOptions, QueryStats, SelfCollisionRequest, SelfCollisionResult,
-                       SelfContact, SelfDistanceRequest, SelfDistanceResult, UrdfOptions)
+                       PairSamplingOptions, PairSamplingResult, PathRequest, PathResult,
+                       PointCloudInfo, Pose, QueryOptions, QueryStats, SelfCollisionRequest,
+                       SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult,
+                       UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
@@ -58,7 +59,7 @@ __all__ = [
     "CameraIntrinsics", "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox",
     "DepthImage", "DistanceRequest",
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
-    "OctreeStats", "PairSamplingOptions", "PathRequest", "PathResult", "PointCloudInfo", "Pose",
+    "OctreeStats", "PairSamplingOptions", "PairSamplingResult", "PathRequest", "PathResult", "PointCloudInfo", "Pose",
     "QueryOptions", "QueryStats", "SelfCollisionRequest", "SelfCollisionResult", "SelfContact",
     "SelfDistanceRequest", "SelfDistanceResult", "UrdfOptions",
     # exceptions

@@ -136,7 +136,7 @@ SIGNATURES = {
     "opx_query_self_distance": (status, [handle, handle, P(s.SelfDistanceRequest),
                                          P(s.SelfDistanceResult)]),
     "opx_linkset_disable_never_colliding_pairs": (status, [handle, P(s.PairSamplingOptions),
-                                                           P(c_uint32), P(c_uint32)]),
+                                                           P(s.PairSamplingResult)]),
     # batch.h
     "opx_query_check_configurations": (status, [handle, handle, handle, c_void_p, c_size_t, c_size_t,
                                                 c_size_t, c_void_p, c_size_t, c_size_t,

@@ -177,7 +177,12 @@ class SelfDistanceResult(Struct):
 
 class PairSamplingOptions(Struct):
     _fields_ = [("struct_size", c_uint32), ("samples", c_uint32), ("seed", c_uint64),
-                ("also_always_colliding", c_int32), ("reserved0", c_uint32)]
+                ("also_always_colliding", c_int32), ("also_colliding_now", c_int32)]
+
+
+class PairSamplingResult(Struct):
+    _fields_ = [("struct_size", c_uint32), ("now", c_uint32), ("never", c_uint32),
+                ("always", c_uint32)]
 
 
 class PathRequest(Struct):
@@ -277,6 +282,7 @@ VERSIONED = {
     SelfDistanceRequest: "opx_self_distance_request_init",
     SelfDistanceResult: "opx_self_distance_result_init",
     PairSamplingOptions: "opx_pair_sampling_options_init",
+    PairSamplingResult: "opx_pair_sampling_result_init",
     PathRequest: "opx_path_request_init",
     PathResult: "opx_path_result_init",
     BatchRequest: "opx_batch_request_init",

@@ -91,19 +91,22 @@ class RobotModel:
         """The joint positions in model order, as FK uses them."""
         return read_array(lib.opx_linkset_get_joint_positions, self)
 
-    def disable_never_colliding_pairs(self, samples=10000, seed=1, also_always_colliding=False):
+    def disable_never_colliding_pairs(self, samples=10000, seed=1, also_always_colliding=False,
+                                      also_colliding_now=False):
         """Disables every pair of links that never collides over `samples`
         random configurations (each moving joint uniform within its
         limits), as MoveIt's setup assistant does; with
         also_always_colliding=True also the pairs colliding in every sample
-        (links meeting at their joint).  Poses and joints do not change.
-        Returns (never, always): how many pairs each rule disabled."""
+        (links meeting at their joint), with also_colliding_now=True those
+        colliding at the current poses (the default configuration).  Poses
+        and joints do not change.  Returns the PairSamplingResult: how many
+        pairs each rule disabled (now, never, always)."""
         options = init_struct(s.PairSamplingOptions, samples=samples, seed=seed,
-                              also_always_colliding=also_always_colliding)
-        never, always = ctypes.c_uint32(), ctypes.c_uint32()
-        lib.opx_linkset_disable_never_colliding_pairs(self, options, ctypes.byref(never),
-                                                      ctypes.byref(always))
-        return never.value, always.value
+                              also_always_colliding=also_always_colliding,
+                              also_colliding_now=also_colliding_now)
+        out = init_struct(s.PairSamplingResult)
+        lib.opx_linkset_disable_never_colliding_pairs(self, options, out)
+        return out
 
     @property
     def disabled_pairs(self):

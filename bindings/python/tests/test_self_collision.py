@@ -85,15 +85,20 @@ class SelfCollision(unittest.TestCase):
 
     def test_sampling_disables_the_pairs_that_never_collide(self):
         robot = octoprox.LinkSet.from_urdf_string(ARM)
-        never, always = robot.disable_never_colliding_pairs(samples=200, also_always_colliding=True)
+        result = robot.disable_never_colliding_pairs(samples=200, also_always_colliding=True)
         # The hand (z >= 0.45) never reaches the base (z <= 0.2) nor the arm
         # (z <= 0.25); the arm always lies on the base.
-        self.assertEqual((never, always), (2, 1))
+        self.assertEqual((result.now, result.never, result.always), (0, 2, 1))
         for pair in (("base", "hand"), ("arm", "hand"), ("base", "arm")):
             self.assertFalse(robot.pair_enabled(*pair), pair)
         robot = octoprox.LinkSet.from_urdf_string(ARM)
-        self.assertEqual(robot.disable_never_colliding_pairs(samples=200), (2, 0))
+        result = robot.disable_never_colliding_pairs(samples=200)
+        self.assertEqual((result.now, result.never, result.always), (0, 2, 0))
         self.assertTrue(robot.pair_enabled("base", "arm"))
+        robot = octoprox.LinkSet.from_urdf_string(ARM)
+        result = robot.disable_never_colliding_pairs(samples=200, also_colliding_now=True)
+        self.assertEqual((result.now, result.never), (1, 2))  # the arm on the base, now
+        self.assertFalse(octoprox.Query().self_collide(robot).collided)
 
     def test_bad_arguments_name_the_function_and_the_argument(self):
         links, query = two_cubes(0.01), octoprox.Query()

@@ -86,14 +86,24 @@ LinkPairs testable_pairs(const LinkSet &links) {
     return pairs;
 }
 
+// The testable pairs touching at the copy's current poses, disabled.
+uint32_t disable_touching_now(const LinkSet &posed, LinkSet &links, SelfCollider &collider) {
+    std::vector<LinkPair> touching;
+    collider.touching_pairs(posed, testable_pairs(links), touching);
+    for (const LinkPair &p : touching) links.set_pair_enabled(p.a, p.b, false);
+    return static_cast<uint32_t>(touching.size());
+}
+
 }  // namespace
 
 PairSamplingOutcome disable_never_colliding_pairs(LinkSet &links, const JointTree &joints,
                                                   const PairSamplingSettings &settings) {
     LinkSet posed(links);
     for (uint32_t link = 0; link < posed.link_count(); ++link) posed.set_link_enabled(link, true);
-    Sampler sampler(joints, posed, settings.seed);
     SelfCollider collider;
+    PairSamplingOutcome outcome;
+    if (settings.also_now) outcome.now = disable_touching_now(posed, links, collider);
+    Sampler sampler(joints, posed, settings.seed);
     LinkPairs never = testable_pairs(links), always = never;
     std::vector<LinkPair> touching;
     for (uint32_t s = 0; s < settings.samples; ++s) {
@@ -104,7 +114,6 @@ PairSamplingOutcome disable_never_colliding_pairs(LinkSet &links, const JointTre
         collider.touching_pairs(posed, always, touching);
         keep_pairs(always, touching);
     }
-    PairSamplingOutcome outcome;
     outcome.never = disable_remaining(never, links);
     if (settings.also_always && settings.samples > 0) outcome.always = disable_remaining(always, links);
     return outcome;

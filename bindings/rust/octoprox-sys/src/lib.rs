@@ -62,6 +62,7 @@ default_from_init! {
     opx_self_distance_request => opx_self_distance_request_init,
     opx_self_distance_result => opx_self_distance_result_init,
     opx_pair_sampling_options => opx_pair_sampling_options_init,
+    opx_pair_sampling_result => opx_pair_sampling_result_init,
     opx_path_request => opx_path_request_init,
     opx_path_result => opx_path_result_init,
     opx_batch_request => opx_batch_request_init,

@@ -68,6 +68,7 @@ pub type SelfContact = sys::opx_self_contact;
 pub type SelfDistanceRequest = sys::opx_self_distance_request;
 pub type SelfDistanceResult = sys::opx_self_distance_result;
 pub type PairSamplingOptions = sys::opx_pair_sampling_options;
+pub type PairSamplingResult = sys::opx_pair_sampling_result;
 pub type PathRequest = sys::opx_path_request;
 pub type PathResult = sys::opx_path_result;
 pub type BatchRequest = sys::opx_batch_request;

@@ -1,7 +1,7 @@
 //! Self-collision (`self_collision.h`): a link set against itself at its
 //! current poses, over the pairs of links it checks.
 use crate::error::{check, Result};
-use crate::{sys, LinkSet, PairSamplingOptions, Query, SelfCollisionRequest,
+use crate::{sys, LinkSet, PairSamplingOptions, PairSamplingResult, Query, SelfCollisionRequest,
             SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
 
 impl Query {
@@ -77,17 +77,16 @@ impl LinkSet {
     /// `options.samples` random configurations (each moving joint uniform
     /// within its limits), as MoveIt's setup assistant does; with
     /// `options.also_always_colliding = 1` also the pairs colliding in
-    /// every sample.  A link set from URDF only; its poses and joints do
-    /// not change.  Returns how many pairs were disabled for never and for
-    /// always colliding.
+    /// every sample, with `options.also_colliding_now = 1` those colliding
+    /// at the current poses.  A link set from URDF only; its poses and
+    /// joints do not change.  Returns how many pairs each rule disabled.
     pub fn disable_never_colliding_pairs(&mut self, options: &PairSamplingOptions)
-        -> Result<(u32, u32)> {
-        let (mut never, mut always) = (0, 0);
-        // SAFETY: exclusive access; the outputs are valid.
+        -> Result<PairSamplingResult> {
+        let mut out = PairSamplingResult::default();
+        // SAFETY: exclusive access; the output is valid.
         check(unsafe {
-            sys::opx_linkset_disable_never_colliding_pairs(self.as_raw_mut(), options, &mut never,
-                                                           &mut always)
+            sys::opx_linkset_disable_never_colliding_pairs(self.as_raw_mut(), options, &mut out)
         })?;
-        Ok((never, always))
+        Ok(out)
     }
 }
