@@ -17,9 +17,5 @@ constexpr size_t kExactBoxVertices = 256;
 constexpr int kFrontierDepth = 4;
 std::vector<Aabb> mesh_frontier_boxes(const AabbTree &tree);
 
-// The union of the boxes after p -> rotation * p + center (each placed as
-// the axis-aligned box of the rotated box): it holds every point the boxes
-// hold, up to rounding, which a relative pad of 1e-12 covers.
-Aabb placed_frontier_box(const std::vector<Aabb> &boxes, const Eigen::Matrix3d &rotation, const Vec3 &center);
 
 }  // namespace octoprox

@@ -38,13 +38,7 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
         for (const Vec3 &v : s.world_vertices) box.grow(v);
         return box;
     }
-    case ShapeKind::kMesh: {
-        if (def.vertices.size() > kExactBoxVertices)
-            return placed_frontier_box(def.frontier_boxes, core.axes, core.center);
-        Aabb box;  // few vertices: the exact box costs about as much as the frontier's
-        for (const Vec3 &v : def.vertices) box.grow(Vec3(core.axes * v + core.center));
-        return box;
-    }
+    case ShapeKind::kMesh: return placed_union(def.bounds, core.axes, core.center);
     }
     return Aabb();
 }
@@ -55,7 +49,9 @@ void build_mesh_tree(ShapeDef &def) {
     std::vector<Aabb> boxes;
     triangle_boxes(def.vertices, def.triangles, boxes);
     def.mesh_tree.build(boxes);
-    def.frontier_boxes = mesh_frontier_boxes(def.mesh_tree);
+    // Few vertices: the exact box costs about as much as the frontier's.
+    def.bounds = def.vertices.size() > kExactBoxVertices ? box_columns(mesh_frontier_boxes(def.mesh_tree))
+                                                         : point_columns(def.vertices);
 }
 
 void PlacedShape::place_mesh() const {

@@ -9,6 +9,7 @@
 
 #include "broadphase/aabb_tree.hpp"
 #include "geometry/convex.hpp"
+#include "robot/box_columns.hpp"
 
 #include <array>
 #include <atomic>
@@ -30,11 +31,12 @@ struct ShapeDef {
     std::vector<Vec3> vertices;     // convex, mesh (shape frame)
     std::vector<std::array<uint32_t, 3>> triangles;  // mesh
     AabbTree mesh_tree;             // mesh: topology over the triangles, built once
-    // Mesh: the boxes of the triangle tree's nodes a few levels down (at
-    // most 16, shape frame).  Placed, their union bounds the mesh a little
-    // loosely for the price of a few dozen flops each, where the exact box
-    // needs every vertex.
-    std::vector<Aabb> frontier_boxes;
+    // Mesh: what its box after a pose update is the union of (shape
+    // frame): its vertices when they are few (the exact box), else the
+    // boxes of the triangle tree's nodes a few levels down (at most 16),
+    // whose union bounds the mesh a little loosely for the price of a few
+    // dozen flops each, where the exact box needs every vertex.
+    BoxColumns bounds;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.
