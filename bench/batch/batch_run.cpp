@@ -55,10 +55,10 @@ bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const Run
                std::vector<Row> &rows) {
     const ConfigurationSet set = draw_configurations(robot, base, options.configurations, kSeed, true);
     const Workload work{robot, scene, set, kSelfCollision, options.rounds};
-    const Timing single = time_single_calls(work);
-    const Timing one = time_batch(work, 1), two = time_batch(work, 2);
     FclCheck fcl_check(robot, *scene.fcl_octree);
-    const Timing fcl = time_fcl(Workload{robot, scene, set, true, 1}, fcl_check, true);
+    const std::vector<Timing> t = time_interleaved(
+        work, {single_calls(work), batch_call(work, 1), batch_call(work, 2), fcl_calls(work, fcl_check)});
+    const Timing &single = t[0], &one = t[1], &two = t[2], &fcl = t[3];
     rows.push_back(row(robot, scene, "single calls", single));
     rows.push_back(row(robot, scene, "batch 1 thread", one));
     rows.push_back(row(robot, scene, "batch 2 threads", two));

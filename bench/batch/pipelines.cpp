@@ -1,6 +1,8 @@
 #include "pipelines.hpp"
 
+#include <algorithm>
 #include <functional>
+#include <memory>
 
 #include "timing.hpp"
 
@@ -9,80 +11,92 @@ namespace {
 
 using paper_tables::check_opx;
 
-// Runs `run` once untimed, then `rounds` timed; per configuration.
-Timing time_rounds(const Workload &work, const std::function<void(std::vector<uint8_t> &)> &run) {
-    Timing timing;
-    timing.collided.assign(work.set.count, 0);
-    run(timing.collided);
-    std::vector<double> us;
-    std::vector<uint8_t> scratch(work.set.count);
-    for (int r = 0; r < work.rounds; ++r)
-        us.push_back(1000.0 * paper_tables::time_once_ms([&] { run(scratch); }) / double(work.set.count));
-    timing.us_per_configuration = paper_tables::median(us);
-    timing.fastest_us = *std::min_element(us.begin(), us.end());
-    return timing;
-}
-
 paper_tables::OpxQueryPtr make_query() { return paper_tables::make_direct_query(); }
+
+// `run` over the set, timed whole.
+template <class Run>
+double timed_ms(Run &&run) {
+    return paper_tables::time_once_ms(run);
+}
 
 }  // namespace
 
-Timing time_single_calls(const Workload &work) {
-    const paper_tables::OpxQueryPtr query = make_query();
-    opx_linkset *links = work.robot.links.get();
-    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
-    request.max_contacts = 0;
-    opx_self_collision_request self_request = OPX_SELF_COLLISION_REQUEST_INIT;
-    self_request.max_contacts = 0;
-    return time_rounds(work, [&](std::vector<uint8_t> &collided) {
-        for (size_t i = 0; i < work.set.count; ++i) {
-            check_opx(opx_linkset_set_joint_positions(links, work.set.row(i), work.set.joints, &work.set.base),
-                      "opx_linkset_set_joint_positions");
-            opx_collision_result result = OPX_COLLISION_RESULT_INIT;
-            check_opx(opx_query_collide(query.get(), work.scene.tree.get(), links, &request, &result),
-                      "opx_query_collide");
-            if (!result.collided && work.self_collision) {
-                opx_self_collision_result self = OPX_SELF_COLLISION_RESULT_INIT;
-                check_opx(opx_query_self_collide(query.get(), links, &self_request, &self), "opx_query_self_collide");
-                result.collided = self.collided;
-            }
-            collided[i] = static_cast<uint8_t>(result.collided);
+std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pipeline> &pipelines) {
+    const size_t n = pipelines.size();
+    std::vector<Timing> timings(n);
+    std::vector<std::vector<double>> us(n);
+    std::vector<uint8_t> scratch(work.set.count);
+    for (size_t p = 0; p < n; ++p) {
+        timings[p].collided.assign(work.set.count, 0);
+        pipelines[p](timings[p].collided);
+    }
+    for (int round = 0; round < work.rounds; ++round)
+        for (size_t k = 0; k < n; ++k) {
+            const size_t p = (k + size_t(round)) % n;
+            us[p].push_back(1000.0 * pipelines[p](scratch) / double(work.set.count));
         }
-    });
+    for (size_t p = 0; p < n; ++p) {
+        timings[p].us_per_configuration = paper_tables::median(us[p]);
+        timings[p].fastest_us = *std::min_element(us[p].begin(), us[p].end());
+    }
+    return timings;
 }
 
-Timing time_batch(const Workload &work, uint32_t threads) {
-    const paper_tables::OpxQueryPtr query = make_query();
-    opx_batch_request request = OPX_BATCH_REQUEST_INIT;
-    request.max_threads = threads;
-    request.self_collision = work.self_collision ? 1 : 0;
-    return time_rounds(work, [&](std::vector<uint8_t> &collided) {
-        check_opx(opx_query_check_configurations(query.get(), work.scene.tree.get(), work.robot.links.get(),
-                                                 work.set.rows.data(), work.set.count, work.set.joints, 0,
-                                                 &work.set.base, 1, 0, &request, collided.data(), nullptr,
-                                                 work.set.count),
-                  "opx_query_check_configurations");
-    });
+Pipeline single_calls(const Workload &work) {
+    std::shared_ptr<opx_query> query = make_query();
+    return [&work, query](std::vector<uint8_t> &collided) {
+        opx_linkset *links = work.robot.links.get();
+        opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+        request.max_contacts = 0;
+        opx_self_collision_request self_request = OPX_SELF_COLLISION_REQUEST_INIT;
+        self_request.max_contacts = 0;
+        return timed_ms([&] {
+            for (size_t i = 0; i < work.set.count; ++i) {
+                check_opx(opx_linkset_set_joint_positions(links, work.set.row(i), work.set.joints, &work.set.base),
+                          "opx_linkset_set_joint_positions");
+                opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+                check_opx(opx_query_collide(query.get(), work.scene.tree.get(), links, &request, &result),
+                          "opx_query_collide");
+                if (!result.collided && work.self_collision) {
+                    opx_self_collision_result self = OPX_SELF_COLLISION_RESULT_INIT;
+                    check_opx(opx_query_self_collide(query.get(), links, &self_request, &self),
+                              "opx_query_self_collide");
+                    result.collided = self.collided;
+                }
+                collided[i] = static_cast<uint8_t>(result.collided);
+            }
+        });
+    };
+}
+
+Pipeline batch_call(const Workload &work, uint32_t threads) {
+    std::shared_ptr<opx_query> query = make_query();
+    return [&work, query, threads](std::vector<uint8_t> &collided) {
+        opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+        request.max_threads = threads;
+        request.self_collision = work.self_collision ? 1 : 0;
+        return timed_ms([&] {
+            check_opx(opx_query_check_configurations(query.get(), work.scene.tree.get(), work.robot.links.get(),
+                                                     work.set.rows.data(), work.set.count, work.set.joints, 0,
+                                                     &work.set.base, 1, 0, &request, collided.data(), nullptr,
+                                                     work.set.count),
+                      "opx_query_check_configurations");
+        });
+    };
 }
 
 // Per configuration: place the objects (untimed), then time world and self.
-Timing time_fcl(const Workload &work, FclCheck &fcl, bool self_collision) {
-    Timing timing;
-    timing.collided.assign(work.set.count, 0);
-    std::vector<double> us;
-    for (int r = 0; r < work.rounds; ++r) {
+Pipeline fcl_calls(const Workload &work, FclCheck &fcl) {
+    return [&work, &fcl](std::vector<uint8_t> &collided) {
         double total_ms = 0.0;
         for (size_t i = 0; i < work.set.count; ++i) {
             fcl.place(work.set.poses[i]);
             bool hit = false;
-            total_ms += paper_tables::time_once_ms([&] { hit = fcl.world_collides() || (self_collision && fcl.self_collides()); });
-            timing.collided[i] = hit ? 1 : 0;
+            total_ms += paper_tables::time_once_ms([&] { hit = fcl.world_collides() || fcl.self_collides(); });
+            collided[i] = hit ? 1 : 0;
         }
-        us.push_back(1000.0 * total_ms / double(work.set.count));
-    }
-    timing.us_per_configuration = paper_tables::median(us);
-    timing.fastest_us = *std::min_element(us.begin(), us.end());
-    return timing;
+        return total_ms;
+    };
 }
 
 namespace {

@@ -4,12 +4,12 @@
 //                     per configuration: the one-call way
 //   batch N threads   one opx_query_check_configurations call
 //   fcl               FclCheck: world, then self; FK (placing the objects) untimed
-// and the motion batch (opx_query_check_motions).  Each pipeline runs
-// `rounds` times (after one untimed run that warms it); the time is the
-// median round's.
+// and the motion batch (opx_query_check_motions).  The time of each is the
+// median of its rounds (time_interleaved).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "configurations.hpp"
@@ -31,9 +31,18 @@ struct Workload {
     int rounds = 3;
 };
 
-Timing time_single_calls(const Workload &work);
-Timing time_batch(const Workload &work, uint32_t threads);
-Timing time_fcl(const Workload &work, FclCheck &fcl, bool self_collision);
+// A pipeline answers every configuration of the set into `collided` and
+// returns the milliseconds of its timed part.
+using Pipeline = std::function<double(std::vector<uint8_t> &collided)>;
+
+Pipeline single_calls(const Workload &work);
+Pipeline batch_call(const Workload &work, uint32_t threads);
+Pipeline fcl_calls(const Workload &work, FclCheck &fcl);
+
+// Each pipeline once untimed (its answers), then work.rounds rounds of
+// every pipeline in turn, the order rotating, so that a change of the
+// machine's load (other work on a shared machine) hits all alike.
+std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pipeline> &pipelines);
 
 constexpr double kMotionResolution = 0.02;  // rad
 

@@ -41,7 +41,8 @@ paper_tables::OpxLinksetPtr one_sphere() {
 
 SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, int rounds) {
     const ConfigurationSet set = draw_configurations(arm, scene.arm_base, count, kSphereSeed, false);
-    const Timing timing = time_batch(Workload{arm, scene, set, false, rounds}, 1);
+    const Workload work{arm, scene, set, false, rounds};
+    const Timing timing = time_interleaved(work, {batch_call(work, 1)})[0];
     SphereArmTiming out;
     out.configurations = count;
     for (uint8_t c : timing.collided) out.collided += c;
