@@ -28,7 +28,9 @@
  * robot, or a few hundred of a small one.  Each worker has its own engine and scratch memory, kept in the
  * opx_query between calls (with OPX_ENGINE_AMORTIZED, each worker builds
  * its own trees of a frame once), so a warm call allocates nothing per
- * configuration.  These calls leave the query's results (contacts, cost
+ * configuration.  Each worker also keeps its own copy of the link set
+ * (shapes and meshes: a few MB for the PR2), made again only when the link
+ * set changes in more than its poses.  These calls leave the query's results (contacts, cost
  * boxes, link distances) as they were, but for opx_query_check_motion with
  * compute_cost, which leaves them as opx_query_path does (its cost boxes,
  * no contacts).

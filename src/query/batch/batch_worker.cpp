@@ -30,15 +30,11 @@ bool BatchWorker::collides_at(const SensorOctree &tree, const double *commanded,
 
 bool BatchWorker::collides(const SensorOctree &tree, const LinkSet &posed, const CollisionSettings &collision,
                            bool self_collision) {
-    const CollisionAnswer world = context_.collide(tree, posed, collision);
-    narrow_tests_ += world.outcome.narrow_tests;
-    if (world.outcome.collided) return true;
+    if (context_.collide(tree, posed, collision).outcome.collided) return true;
     if (!self_collision) return false;
     SelfCollisionSettings yes_no;
     yes_no.max_contacts = 0;
-    const SelfCollisionOutcome self = context_.self_collide(posed, yes_no);
-    narrow_tests_ += self.narrow_tests;
-    return self.collided;
+    return context_.self_collide(posed, yes_no).collided;
 }
 
 // The distance first; the collision test only when the distance leaves
@@ -47,7 +43,6 @@ bool BatchWorker::collides(const SensorOctree &tree, const LinkSet &posed, const
 ConfigurationAnswer BatchWorker::with_distance(const SensorOctree &tree, const LinkSet &posed,
                                                const ConfigurationSettings &settings) {
     const DistanceAnswer nearest = context_.distance(tree, posed, settings.distance_settings, false);
-    narrow_tests_ += nearest.outcome.narrow_tests;
     ConfigurationAnswer answer;
     answer.distance = nearest.outcome.found ? nearest.outcome.distance : settings.distance_settings.cutoff;
     const bool may_touch = nearest.outcome.found && nearest.outcome.distance <= kSurelyApart;
@@ -61,7 +56,6 @@ void BatchWorker::add_self_distance(const LinkSet &posed, const ConfigurationSet
     SelfDistanceSettings self;
     self.cutoff = settings.distance_settings.cutoff;
     const SelfDistanceOutcome nearest = context_.self_distance(posed, self);
-    narrow_tests_ += nearest.narrow_tests;
     if (nearest.found) answer.distance = std::min(answer.distance, nearest.distance);
     if (answer.collided || !nearest.found || nearest.distance > kSurelyApart) return;
     SelfCollisionSettings yes_no;

@@ -29,7 +29,6 @@ public:
     // The robot posed at `commanded` collides (world, and self when asked)?
     bool collides_at(const SensorOctree &tree, const double *commanded, const Pose &base,
                      const CollisionSettings &collision, bool self_collision);
-    uint64_t narrow_tests() const { return narrow_tests_; }
 
 private:
     bool collides(const SensorOctree &tree, const LinkSet &posed, const CollisionSettings &collision,
@@ -41,7 +40,6 @@ private:
     QueryContext context_;
     PosedRobot robot_;
     std::vector<double> row_;  // one configuration copied from the caller
-    uint64_t narrow_tests_ = 0;
 };
 
 // The workers of one opx_query, made on first use and kept.
