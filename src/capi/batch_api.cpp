@@ -32,19 +32,11 @@ ConfigurationSettings configuration_settings(const opx_batch_request &r, const S
     return s;
 }
 
-// The motion request's fields shared with a collision request.
+// The motion request's fields shared with a collision request; a motion
+// check keeps no contacts.
 opx_collision_request as_collision_request(const opx_motion_request &r) {
-    opx_collision_request c = OPX_COLLISION_REQUEST_INIT;
-    c.unknown_policy = r.unknown_policy;
-    c.occupancy_threshold = r.occupancy_threshold;
+    opx_collision_request c = collision_request_of(r);
     c.max_contacts = 0;
-    c.compute_cost = r.compute_cost;
-    c.max_cost_boxes = r.max_cost_boxes;
-    c.unknown_probability = r.unknown_probability;
-    for (int axis = 0; axis < 3; ++axis) {
-        c.region_min[axis] = r.region_min[axis];
-        c.region_max[axis] = r.region_max[axis];
-    }
     return c;
 }
 

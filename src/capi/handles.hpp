@@ -41,6 +41,22 @@ InsertSettings read_insert_options(const opx_insert_options *options);
 opx_insert_report report_from_counts(const InsertCounts &counts);
 // A collision request (already versioned) checked and turned into settings.
 CollisionSettings collision_settings(const opx_collision_request &request, const SensorOctree &tree);
+// The fields a path or motion request shares with a collision request, the
+// others at the collision request's defaults.
+template <class Request>
+opx_collision_request collision_request_of(const Request &r) {
+    opx_collision_request c = OPX_COLLISION_REQUEST_INIT;
+    c.unknown_policy = r.unknown_policy;
+    c.occupancy_threshold = r.occupancy_threshold;
+    c.compute_cost = r.compute_cost;
+    c.max_cost_boxes = r.max_cost_boxes;
+    c.unknown_probability = r.unknown_probability;
+    for (int axis = 0; axis < 3; ++axis) {
+        c.region_min[axis] = r.region_min[axis];
+        c.region_max[axis] = r.region_max[axis];
+    }
+    return c;
+}
 // The public form of a cost box.
 opx_cost_box cost_box_to_abi(const CostBox &box, double resolution);
 // The public form of a collision answer, its contacts and cost boxes

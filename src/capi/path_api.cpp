@@ -7,24 +7,9 @@ using namespace octoprox::capi;
 
 namespace {
 
-// The path request's fields shared with a collision request.
-opx_collision_request as_collision_request(const opx_path_request &r) {
-    opx_collision_request c = OPX_COLLISION_REQUEST_INIT;
-    c.unknown_policy = r.unknown_policy;
-    c.occupancy_threshold = r.occupancy_threshold;
-    c.compute_cost = r.compute_cost;
-    c.max_cost_boxes = r.max_cost_boxes;
-    c.unknown_probability = r.unknown_probability;
-    for (int axis = 0; axis < 3; ++axis) {
-        c.region_min[axis] = r.region_min[axis];
-        c.region_max[axis] = r.region_max[axis];
-    }
-    return c;
-}
-
 PathSettings path_settings(const opx_path_request &merged, const SensorOctree &tree) {
     PathSettings settings;
-    settings.collision = collision_settings(as_collision_request(merged), tree);
+    settings.collision = collision_settings(collision_request_of(merged), tree);
     settings.distance = merged.compute_distance != 0;
     settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
     settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
