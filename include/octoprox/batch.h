@@ -71,10 +71,11 @@ typedef struct opx_batch_request {
      * or +infinity: no cutoff. */
     double distance_cutoff;
     uint32_t max_threads;       /* 1 (default): the caller's thread; 0: one per hardware thread */
-    uint32_t reserved0;
+    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
 } opx_batch_request;
 
-#define OPX_BATCH_REQUEST_INIT {sizeof(opx_batch_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1, 0}
+#define OPX_BATCH_REQUEST_INIT {sizeof(opx_batch_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1, \
+    OPX_OBSTACLE_CELLS}
 OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t size);
 
 /*
@@ -121,10 +122,12 @@ typedef struct opx_motion_request {
     double unknown_probability; /* 0.5 */
     double region_min[3];
     double region_max[3];
+    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
+    int32_t reserved0;
 } opx_motion_request;
 
 #define OPX_MOTION_REQUEST_INIT {sizeof(opx_motion_request), OPX_UNKNOWN_FREE, 0.0, 0.01, 0, 0, \
-    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, OPX_OBSTACLE_CELLS, 0}
 OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t size);
 
 typedef struct opx_motion_result {

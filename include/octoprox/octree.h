@@ -244,10 +244,13 @@ typedef struct opx_octree_stats {
     /* Tight bounds of all observed cells' boxes; zeros when the map is empty. */
     double known_min[3];
     double known_max[3];
+    /* Occupied leaves that keep the box of their sensed points
+     * (OPX_OBSTACLE_POINT_EXTENTS); the others are whole cubes. */
+    uint64_t leaves_with_extent;
 } opx_octree_stats;
 
 #define OPX_OCTREE_STATS_INIT {sizeof(opx_octree_stats), 0, 0.0, 0, 0, 0, 0, 0, \
-    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0}
 OPX_API opx_status opx_octree_stats_init(opx_octree_stats *stats, size_t size);
 
 /* Counts, bounds and memory of the map (one pass over the leaves). */

@@ -79,6 +79,15 @@ OPX_API opx_status opx_query_get_stats(const opx_query *query, opx_query_stats *
 #define OPX_UNKNOWN_FREE 0     /* optimistic, as MoveIt/FCL (default) */
 #define OPX_UNKNOWN_OCCUPIED 1 /* safe: a link must lie in observed space */
 
+/* What an occupied cell is as an obstacle (docs/geometry.md).  Uncertain
+ * and unknown space are whole cubes in both models (cost, and unknown
+ * space under OPX_UNKNOWN_OCCUPIED). */
+#define OPX_OBSTACLE_CELLS 0 /* its whole cube, as FCL and MoveIt (default) */
+/* The box of the sensed points that made it occupied, where the map
+ * recorded one (cells hit by opx_octree_insert_points or a depth image);
+ * a cell without one (read from a file or a message) is its whole cube. */
+#define OPX_OBSTACLE_POINT_EXTENTS 1
+
 typedef struct opx_collision_request {
     uint32_t struct_size;
     int32_t unknown_policy;     /* OPX_UNKNOWN_FREE (default) or OPX_UNKNOWN_OCCUPIED */
@@ -106,12 +115,12 @@ typedef struct opx_collision_request {
     /* 1: each contact also gets its penetration depth, normal and point
      * (exact for polytopes: EPA on the Minkowski difference). */
     int32_t compute_penetration;
-    int32_t reserved1;
+    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
 } opx_collision_request;
 
 #define OPX_COLLISION_REQUEST_INIT \
     {sizeof(opx_collision_request), OPX_UNKNOWN_FREE, 0.0, 1, 0, 16, 0, 0.5, \
-     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, 0}
+     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, OPX_OBSTACLE_CELLS}
 OPX_API opx_status opx_collision_request_init(opx_collision_request *request, size_t size);
 
 typedef struct opx_collision_result {
@@ -217,10 +226,15 @@ typedef struct opx_distance_request {
      * witnesses at the deepest point of the link and where it leaves the
      * cell (they are -distance apart).  0 (default): overlap is distance 0. */
     int32_t signed_distance;
+    /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS; with
+     * extents the witness on the cell lies on the cell's point box. */
+    int32_t obstacle_geometry;
+    int32_t reserved0;
 } opx_distance_request;
 
 #define OPX_DISTANCE_REQUEST_INIT \
-    {sizeof(opx_distance_request), OPX_UNKNOWN_FREE, 0.0, 0.0, 0.0, 0.0, 0, 0}
+    {sizeof(opx_distance_request), OPX_UNKNOWN_FREE, 0.0, 0.0, 0.0, 0.0, 0, 0, \
+     OPX_OBSTACLE_CELLS, 0}
 OPX_API opx_status opx_distance_request_init(opx_distance_request *request, size_t size);
 
 typedef struct opx_distance_result {
@@ -278,13 +292,13 @@ typedef struct opx_path_request {
      * that touches it.  Other fields as in opx_collision_request. */
     int32_t compute_cost;
     uint32_t max_cost_boxes;    /* the costliest boxes kept (default 16) */
-    uint32_t reserved0;
+    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
     double unknown_probability; /* 0.5 */
     double region_min[3];
     double region_max[3];
 } opx_path_request;
 
-#define OPX_PATH_REQUEST_INIT {sizeof(opx_path_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 16, 0, \
+#define OPX_PATH_REQUEST_INIT {sizeof(opx_path_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 16, OPX_OBSTACLE_CELLS, \
     0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
 OPX_API opx_status opx_path_request_init(opx_path_request *request, size_t size);
 

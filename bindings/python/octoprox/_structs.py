@@ -75,7 +75,7 @@ class OctreeStats(Struct):
                 ("leaves_occupied", c_uint64), ("leaves_uncertain", c_uint64),
                 ("leaves_free", c_uint64), ("inner_nodes", c_uint64),
                 ("memory_bytes", c_uint64), ("occupied_min", D3), ("occupied_max", D3),
-                ("known_min", D3), ("known_max", D3)]
+                ("known_min", D3), ("known_max", D3), ("leaves_with_extent", c_uint64)]
 
 
 class Leaf(Struct):
@@ -108,7 +108,7 @@ class CollisionRequest(Struct):
                 ("compute_cost", c_int32), ("max_cost_boxes", c_uint32),
                 ("reserved0", c_uint32), ("unknown_probability", c_double),
                 ("region_min", D3), ("region_max", D3), ("compute_penetration", c_int32),
-                ("reserved1", c_int32)]
+                ("obstacle_geometry", c_int32)]
 
 
 class CollisionResult(Struct):
@@ -135,7 +135,8 @@ class DistanceRequest(Struct):
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("abs_err", c_double),
                 ("rel_err", c_double), ("cutoff", c_double), ("per_link", c_int32),
-                ("signed_distance", c_int32)]
+                ("signed_distance", c_int32), ("obstacle_geometry", c_int32),
+                ("reserved0", c_int32)]
 
 
 class DistanceResult(Struct):
@@ -189,7 +190,7 @@ class PathRequest(Struct):
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("compute_distance", c_int32),
                 ("compute_cost", c_int32), ("max_cost_boxes", c_uint32),
-                ("reserved0", c_uint32), ("unknown_probability", c_double),
+                ("obstacle_geometry", c_int32), ("unknown_probability", c_double),
                 ("region_min", D3), ("region_max", D3)]
 
 
@@ -205,7 +206,7 @@ class BatchRequest(Struct):
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("self_collision", c_int32),
                 ("compute_distance", c_int32), ("distance_cutoff", c_double),
-                ("max_threads", c_uint32), ("reserved0", c_uint32)]
+                ("max_threads", c_uint32), ("obstacle_geometry", c_int32)]
 
 
 class MotionRequest(Struct):
@@ -213,7 +214,8 @@ class MotionRequest(Struct):
                 ("occupancy_threshold", c_double), ("resolution", c_double),
                 ("self_collision", c_int32), ("compute_cost", c_int32),
                 ("max_cost_boxes", c_uint32), ("max_threads", c_uint32),
-                ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3)]
+                ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3),
+                ("obstacle_geometry", c_int32), ("reserved0", c_int32)]
 
 
 class MotionResult(Struct):
