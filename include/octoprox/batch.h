@@ -58,27 +58,27 @@ extern "C" {
 
 typedef struct opx_batch_request {
     uint32_t struct_size;
-    int32_t unknown_policy;     /* as in opx_collision_request */
-    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
-    int32_t self_collision;     /* 1: also the link set's own enabled pairs */
-    /* 1: out_distances gets each configuration's minimum distance between
+    int32_t unknown_policy;     /**< as in opx_collision_request */
+    double occupancy_threshold; /**< as in opx_collision_request; 0: the octree's */
+    int32_t self_collision;     /**< 1: also the link set's own enabled pairs */
+    /** 1: out_distances gets each configuration's minimum distance between
      * the enabled links and the obstacles (metres, padding included, 0 when
      * touching or overlapping; with self_collision, the smaller of that and
      * the self distance), and no check stops at the first contact. */
     int32_t compute_distance;
-    /* With compute_distance: obstacles farther than this (metres) are not
+    /** With compute_distance: obstacles farther than this (metres) are not
      * searched, the distance is then the cutoff ("at least").  0 (default)
      * or +infinity: no cutoff. */
     double distance_cutoff;
-    uint32_t max_threads;       /* 1 (default): the caller's thread; 0: one per hardware thread */
-    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
+    uint32_t max_threads;       /**< 1 (default): the caller's thread; 0: one per hardware thread */
+    int32_t obstacle_geometry;  /**< OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
 } opx_batch_request;
 
 #define OPX_BATCH_REQUEST_INIT {sizeof(opx_batch_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1, \
     OPX_OBSTACLE_CELLS}
 OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t size);
 
-/*
+/**
  * Checks `configuration_count` joint vectors (rows of `positions`, see
  * above) of the link set against the octree.  out_collided[i] gets 1 when
  * configuration i collides, else 0 (it stops at the first contact unless
@@ -101,28 +101,28 @@ OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_oc
 
 typedef struct opx_motion_request {
     uint32_t struct_size;
-    int32_t unknown_policy;     /* as in opx_collision_request */
-    double occupancy_threshold; /* as in opx_collision_request; 0: the octree's */
-    /* The largest step of any joint between two checked configurations
+    int32_t unknown_policy;     /**< as in opx_collision_request */
+    double occupancy_threshold; /**< as in opx_collision_request; 0: the octree's */
+    /** The largest step of any joint between two checked configurations
      * (radians or metres, > 0; default 0.01).  A motion from start to goal
      * is checked at n + 1 configurations, n = ceil(max over joints of
      * |goal - start| / resolution) (at least 1; mimic joints by their own
      * positions), configuration i being start + (i / n) (goal - start), the
      * goal itself for i = n.  At most 1e7 steps per motion. */
     double resolution;
-    int32_t self_collision;     /* 1: also the link set's own enabled pairs */
-    /* opx_query_check_motion only: 1 also gives the cost of uncertain and
+    int32_t self_collision;     /**< 1: also the link set's own enabled pairs */
+    /** opx_query_check_motion only: 1 also gives the cost of uncertain and
      * unknown space the motion sweeps through, every configuration checked
      * (as opx_query_path with compute_cost over the n + 1 configurations:
      * the boxes are held by the query, opx_query_get_cost_box).  Fields
      * below as in opx_collision_request. */
     int32_t compute_cost;
-    uint32_t max_cost_boxes;    /* the costliest boxes kept (default 16) */
-    uint32_t max_threads;       /* opx_query_check_motions: 1 (default) or 0, as above */
-    double unknown_probability; /* 0.5 */
+    uint32_t max_cost_boxes;    /**< the costliest boxes kept (default 16) */
+    uint32_t max_threads;       /**< opx_query_check_motions: 1 (default) or 0, as above */
+    double unknown_probability; /**< 0.5 */
     double region_min[3];
     double region_max[3];
-    int32_t obstacle_geometry;  /* OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
+    int32_t obstacle_geometry;  /**< OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
     int32_t reserved0;
 } opx_motion_request;
 
@@ -132,23 +132,23 @@ OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t s
 
 typedef struct opx_motion_result {
     uint32_t struct_size;
-    int32_t collided;                /* 1: some configuration of the motion collides */
-    /* Where the first colliding configuration lies: i / n in [0, 1]; -1
+    int32_t collided;                /**< 1: some configuration of the motion collides */
+    /** Where the first colliding configuration lies: i / n in [0, 1]; -1
      * when none collides. */
     double first_collision_fraction;
-    uint64_t steps;                  /* n: the motion is checked at n + 1 configurations */
-    /* Configurations checked: the ends first, then ever finer midpoints,
+    uint64_t steps;                  /**< n: the motion is checked at n + 1 configurations */
+    /** Configurations checked: the ends first, then ever finer midpoints,
      * none beyond the first collision found so far (all with compute_cost). */
     uint64_t configurations_checked;
-    double total_cost;               /* with compute_cost: m^3, over all cells swept */
-    uint64_t cost_box_count;         /* held by the query (opx_query_get_cost_box) */
-    uint64_t cost_boxes_found;       /* all cells swept */
+    double total_cost;               /**< with compute_cost: m^3, over all cells swept */
+    uint64_t cost_box_count;         /**< held by the query (opx_query_get_cost_box) */
+    uint64_t cost_boxes_found;       /**< all cells swept */
 } opx_motion_result;
 
 #define OPX_MOTION_RESULT_INIT {sizeof(opx_motion_result), 0, -1.0, 0, 0, 0.0, 0, 0}
 OPX_API opx_status opx_motion_result_init(opx_motion_result *result, size_t size);
 
-/*
+/**
  * Checks the straight joint-space motion from `start` to `goal` (joint_count
  * values each, model order) at the request's resolution, the root link at
  * base_pose (map frame; NULL: the origin).  request may be NULL (defaults).
@@ -160,7 +160,7 @@ OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tr
                                           const opx_motion_request *request,
                                           opx_motion_result *out_result);
 
-/*
+/**
  * Checks `motion_count` motions, row m of `starts` to row m of `goals`
  * (both `stride` bytes per row, see above), as opx_query_check_motion
  * does (compute_cost is not available here).  out_collided[m] gets 1 when

@@ -35,7 +35,7 @@
 #define OPX_VERSION_PATCH 0
 /* The SONAME names the ABI: liboctoprox.so.0.MINOR while MAJOR is 0 (a
  * minor release may change the ABI), liboctoprox.so.MAJOR from 1.0 on. */
-/* One number that grows with every release: major*10000 + minor*100 + patch. */
+/** One number that grows with every release: major*10000 + minor*100 + patch. */
 #define OPX_VERSION_NUMBER \
     (OPX_VERSION_MAJOR * 10000 + OPX_VERSION_MINOR * 100 + OPX_VERSION_PATCH)
 
@@ -55,22 +55,22 @@
 extern "C" {
 #endif
 
-/* Status codes.  Never renumbered; new codes are only appended. */
+/** Status codes.  Never renumbered; new codes are only appended. */
 typedef int32_t opx_status;
 #define OPX_OK 0
-#define OPX_ERROR_INVALID_ARGUMENT (-1) /* NULL, NaN, out of range, bad stride... */
+#define OPX_ERROR_INVALID_ARGUMENT (-1) /**< NULL, NaN, out of range, bad stride... */
 #define OPX_ERROR_OUT_OF_MEMORY (-2)
-#define OPX_ERROR_VERSION (-3)          /* struct_size 0 or unknown version */
-#define OPX_ERROR_BUFFER_TOO_SMALL (-4) /* the needed size is reported */
-#define OPX_ERROR_UNSUPPORTED (-5)      /* valid, but not handled (yet) */
-#define OPX_ERROR_IO (-6)               /* a file could not be read or written */
-#define OPX_ERROR_CORRUPT (-7)          /* malformed or truncated input data */
-#define OPX_ERROR_INTERNAL (-8)         /* a bug: please report it */
+#define OPX_ERROR_VERSION (-3)          /**< struct_size 0 or unknown version */
+#define OPX_ERROR_BUFFER_TOO_SMALL (-4) /**< the needed size is reported */
+#define OPX_ERROR_UNSUPPORTED (-5)      /**< valid, but not handled (yet) */
+#define OPX_ERROR_IO (-6)               /**< a file could not be read or written */
+#define OPX_ERROR_CORRUPT (-7)          /**< malformed or truncated input data */
+#define OPX_ERROR_INTERNAL (-8)         /**< a bug: please report it */
 
-/* The name of a status code ("OPX_ERROR_IO"), or "OPX_UNKNOWN_STATUS". */
+/** The name of a status code ("OPX_ERROR_IO"), or "OPX_UNKNOWN_STATUS". */
 OPX_API const char *opx_status_name(opx_status status);
 
-/*
+/**
  * The message of the last failed call on this thread, naming the function
  * and the argument, e.g. "opx_octree_insert_points: stride 4 is smaller than
  * one point (12 bytes)".  Never NULL; "" when no call failed yet.  Valid
@@ -78,12 +78,12 @@ OPX_API const char *opx_status_name(opx_status status);
  */
 OPX_API const char *opx_last_error(void);
 
-/* The run-time version, "0.1.0"; compare with OPX_VERSION_* at build time. */
+/** The run-time version, "0.1.0"; compare with OPX_VERSION_* at build time. */
 OPX_API const char *opx_version(void);
-/* The run-time OPX_VERSION_NUMBER. */
+/** The run-time OPX_VERSION_NUMBER. */
 OPX_API uint32_t opx_version_number(void);
 
-/*
+/**
  * A rigid transform: the pose of a child frame in a parent frame.
  * position: metres.  orientation: unit quaternion x, y, z, w (ROS order);
  * it is normalised by the library; a zero or non-finite quaternion is an
@@ -98,7 +98,7 @@ typedef struct opx_pose {
 /* Scalar types of point arrays and depth images. */
 #define OPX_SCALAR_FLOAT32 1
 #define OPX_SCALAR_FLOAT64 2
-#define OPX_SCALAR_UINT16 3 /* depth images only */
+#define OPX_SCALAR_UINT16 3 /**< depth images only */
 
 #ifdef __cplusplus
 }

@@ -43,7 +43,7 @@
 extern "C" {
 #endif
 
-/* A point cloud read from a file; owned by the caller (destroy it). */
+/** A point cloud read from a file; owned by the caller (destroy it). */
 typedef struct opx_point_cloud opx_point_cloud;
 
 /* File formats. */
@@ -52,19 +52,19 @@ typedef struct opx_point_cloud opx_point_cloud;
 
 /* How the points are stored in the file. */
 #define OPX_CLOUD_ENCODING_ASCII 1
-#define OPX_CLOUD_ENCODING_BINARY 2            /* PCD binary; PLY binary_little_endian */
-#define OPX_CLOUD_ENCODING_BINARY_COMPRESSED 3 /* PCD binary_compressed (LZF) */
+#define OPX_CLOUD_ENCODING_BINARY 2            /**< PCD binary; PLY binary_little_endian */
+#define OPX_CLOUD_ENCODING_BINARY_COMPRESSED 3 /**< PCD binary_compressed (LZF) */
 
 typedef struct opx_point_cloud_info {
     uint32_t struct_size;
-    int32_t format;        /* OPX_CLOUD_FORMAT_* */
-    int32_t encoding;      /* OPX_CLOUD_ENCODING_* */
-    int32_t has_viewpoint; /* 1 when the PCD header has a VIEWPOINT line */
-    uint64_t point_count;  /* every point, non-finite ones included */
-    uint64_t finite_count; /* points whose x, y and z are all finite */
-    uint64_t width;        /* PCD WIDTH: columns of an organized cloud, else point_count; PLY: point_count */
-    uint64_t height;       /* PCD HEIGHT: rows of an organized cloud, else 1; PLY: 1 */
-    /* The PCD VIEWPOINT (written tx ty tz qw qx qy qz) as a pose in ROS
+    int32_t format;        /**< OPX_CLOUD_FORMAT_* */
+    int32_t encoding;      /**< OPX_CLOUD_ENCODING_* */
+    int32_t has_viewpoint; /**< 1 when the PCD header has a VIEWPOINT line */
+    uint64_t point_count;  /**< every point, non-finite ones included */
+    uint64_t finite_count; /**< points whose x, y and z are all finite */
+    uint64_t width;        /**< PCD WIDTH: columns of an organized cloud, else point_count; PLY: point_count */
+    uint64_t height;       /**< PCD HEIGHT: rows of an organized cloud, else 1; PLY: 1 */
+    /** The PCD VIEWPOINT (written tx ty tz qw qx qy qz) as a pose in ROS
      * order, as written (not normalised): the pose of the cloud's frame
      * (the sensor's) in the frame the cloud is to be placed in, as PCL's
      * viewer applies it; `octoprox ingest` takes it as the sensor pose.
@@ -75,7 +75,7 @@ typedef struct opx_point_cloud_info {
 #define OPX_POINT_CLOUD_INFO_INIT {sizeof(opx_point_cloud_info), 0, 0, 0, 0, 0, 0, 0, OPX_POSE_IDENTITY}
 OPX_API opx_status opx_point_cloud_info_init(opx_point_cloud_info *info, size_t size);
 
-/*
+/**
  * Reads a .pcd or .ply file (see above) into a new cloud; *out is NULL on
  * failure.  Errors, the message naming the file and what is wrong:
  * OPX_ERROR_IO (the file cannot be opened), OPX_ERROR_CORRUPT (a
@@ -87,12 +87,12 @@ OPX_API opx_status opx_point_cloud_info_init(opx_point_cloud_info *info, size_t 
  * for them.
  */
 OPX_API opx_status opx_point_cloud_read_file(const char *path, opx_point_cloud **out);
-/* Frees the cloud; NULL is a no-op. */
+/** Frees the cloud; NULL is a no-op. */
 OPX_API void opx_point_cloud_destroy(opx_point_cloud *cloud);
 
 OPX_API opx_status opx_point_cloud_get_info(const opx_point_cloud *cloud, opx_point_cloud_info *out);
 
-/*
+/**
  * Copies the points, x y z float32 each (the file's frame, metres as the
  * file has them), point i at (char *)out_xyz + i * stride (0: packed, 12
  * bytes; else at least 12 and a multiple of 4, e.g. 16 for x y z w).

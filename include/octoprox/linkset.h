@@ -44,17 +44,17 @@ typedef struct opx_linkset opx_linkset;
 
 typedef struct opx_shape {
     uint32_t struct_size;
-    int32_t kind;        /* OPX_SHAPE_* */
-    opx_pose pose;       /* the shape frame in the link frame; identity */
-    double radius;       /* sphere, cylinder, capsule */
-    double length;       /* cylinder: full length; capsule: cylindrical part */
-    double size[3];      /* box: full edge lengths */
-    /* convex and mesh: vertex_count points of 3 doubles, vertex_stride bytes
+    int32_t kind;        /**< OPX_SHAPE_* */
+    opx_pose pose;       /**< the shape frame in the link frame; identity */
+    double radius;       /**< sphere, cylinder, capsule */
+    double length;       /**< cylinder: full length; capsule: cylindrical part */
+    double size[3];      /**< box: full edge lengths */
+    /** convex and mesh: vertex_count points of 3 doubles, vertex_stride bytes
      * apart (0: packed), in the shape frame */
     const double *vertices;
     size_t vertex_count;
     size_t vertex_stride;
-    /* mesh: triangle_count triangles of 3 vertex indices, packed */
+    /** mesh: triangle_count triangles of 3 vertex indices, packed */
     const uint32_t *indices;
     size_t triangle_count;
 } opx_shape;
@@ -65,14 +65,14 @@ OPX_API opx_status opx_shape_init(opx_shape *shape, size_t size);
 
 OPX_API opx_status opx_linkset_create(opx_linkset **out);
 OPX_API void opx_linkset_destroy(opx_linkset *links);
-/* A deep copy (shapes, names, poses, paddings, enabled flags and pairs). */
+/** A deep copy (shapes, names, poses, paddings, enabled flags and pairs). */
 OPX_API opx_status opx_linkset_clone(const opx_linkset *links, opx_linkset **out);
 
-/* Adds a link named `name` (copied; names need not be unique, but
+/** Adds a link named `name` (copied; names need not be unique, but
  * opx_linkset_find_link returns the first) with an identity pose. */
 OPX_API opx_status opx_linkset_add_link(opx_linkset *links, const char *name,
                                         uint32_t *out_link);
-/* Adds a shape to a link; *out_shape (may be NULL) gets its index within
+/** Adds a shape to a link; *out_shape (may be NULL) gets its index within
  * the link.  Meshes are built into a BVH over their triangles here, once.
  * Only the new shape is placed; the link set's own BVH is rebuilt by the
  * next opx_linkset_set_poses or query, so building a set of n shapes one
@@ -83,10 +83,10 @@ OPX_API opx_status opx_linkset_add_shape(opx_linkset *links, uint32_t link,
 OPX_API opx_status opx_linkset_get_link_count(const opx_linkset *links, uint32_t *out_count);
 OPX_API opx_status opx_linkset_get_shape_count(const opx_linkset *links, uint32_t link,
                                                uint32_t *out_count);
-/* The link's name; valid until the link set changes or is destroyed. */
+/** The link's name; valid until the link set changes or is destroyed. */
 OPX_API opx_status opx_linkset_get_link_name(const opx_linkset *links, uint32_t link,
                                              const char **out_name);
-/*
+/**
  * Shape `shape` of link `link` as it was added (shape frame at out->pose in
  * the link frame; a box's full sizes, a cylinder's full length).  For
  * convex and mesh shapes, vertices and indices point into the link set
@@ -95,20 +95,20 @@ OPX_API opx_status opx_linkset_get_link_name(const opx_linkset *links, uint32_t 
  */
 OPX_API opx_status opx_linkset_get_shape(const opx_linkset *links, uint32_t link, uint32_t shape,
                                          opx_shape *out_shape);
-/* The first link named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
+/** The first link named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
 OPX_API opx_status opx_linkset_find_link(const opx_linkset *links, const char *name,
                                          uint32_t *out_link);
 
-/* Paddings in metres (>= 0): global and per link. */
+/** Paddings in metres (>= 0): global and per link. */
 OPX_API opx_status opx_linkset_set_padding(opx_linkset *links, double padding);
 OPX_API opx_status opx_linkset_set_link_padding(opx_linkset *links, uint32_t link,
                                                 double padding);
-/* Disabled links take part in no query (e.g. links the sensor cannot see,
+/** Disabled links take part in no query (e.g. links the sensor cannot see,
  * or a gripper holding an object).  All links start enabled. */
 OPX_API opx_status opx_linkset_set_link_enabled(opx_linkset *links, uint32_t link,
                                                 int32_t enabled);
 
-/* Whether self-collision queries (self_collision.h) check links a and b
+/** Whether self-collision queries (self_collision.h) check links a and b
  * (a != b; the order does not matter).  Every pair starts enabled but the
  * pairs an SRDF disables (robot.h).  A link that is itself disabled takes
  * part in no pair, whatever its pairs say. */
@@ -117,7 +117,7 @@ OPX_API opx_status opx_linkset_set_pair_enabled(opx_linkset *links, uint32_t a, 
 OPX_API opx_status opx_linkset_get_pair_enabled(const opx_linkset *links, uint32_t a, uint32_t b,
                                                 int32_t *out_enabled);
 
-/*
+/**
  * Sets the pose of every link in the MAP frame: `count` must equal the
  * number of links; pose i is at (const char *)poses + i * stride (0:
  * packed).  The BVH over the links is refit, not rebuilt.  On an invalid
@@ -132,12 +132,12 @@ OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
  * Aliases kept for compatibility: each behaves exactly as the function
  * named in its comment (its errors name the alias).  Use those names.
  */
-/* Alias of opx_linkset_get_link_count. */
+/** Alias of opx_linkset_get_link_count. */
 OPX_API opx_status opx_linkset_link_count(const opx_linkset *links, uint32_t *out_count);
-/* Alias of opx_linkset_get_shape_count. */
+/** Alias of opx_linkset_get_shape_count. */
 OPX_API opx_status opx_linkset_shape_count(const opx_linkset *links, uint32_t link,
                                            uint32_t *out_count);
-/* Alias of opx_linkset_get_link_name. */
+/** Alias of opx_linkset_get_link_name. */
 OPX_API opx_status opx_linkset_link_name(const opx_linkset *links, uint32_t link,
                                          const char **out_name);
 

@@ -37,7 +37,7 @@ typedef struct opx_octree opx_octree;
 #define OPX_MASK_OCCUPIED (1u << OPX_CELL_OCCUPIED)
 #define OPX_MASK_ALL_KNOWN (OPX_MASK_FREE | OPX_MASK_UNCERTAIN | OPX_MASK_OCCUPIED)
 
-/*
+/**
  * Options of a new octree.  Probabilities are in (0, 1).  Requirements:
  * 1e-6 <= resolution <= 1e6 (metres); prob_miss < 0.5 < prob_hit; clamp_min < clamp_max;
  * 0 < free_threshold <= occupied_threshold < 1.
@@ -45,50 +45,50 @@ typedef struct opx_octree opx_octree;
 typedef struct opx_octree_options {
     uint32_t struct_size;
     uint32_t reserved0;
-    double resolution;         /* edge of a finest cell, metres; default 0.05 */
-    double prob_hit;           /* update of a cell holding an endpoint; 0.7 */
-    double prob_miss;          /* update of a cell a ray passes; 0.4 */
-    double clamp_min;          /* lower clamping bound; 0.1192 */
-    double clamp_max;          /* upper clamping bound; 0.971 */
-    double occupied_threshold; /* occupied when p >= this; 0.5 */
-    double free_threshold;     /* free when p < this; 0.5 */
+    double resolution;         /**< edge of a finest cell, metres; default 0.05 */
+    double prob_hit;           /**< update of a cell holding an endpoint; 0.7 */
+    double prob_miss;          /**< update of a cell a ray passes; 0.4 */
+    double clamp_min;          /**< lower clamping bound; 0.1192 */
+    double clamp_max;          /**< upper clamping bound; 0.971 */
+    double occupied_threshold; /**< occupied when p >= this; 0.5 */
+    double free_threshold;     /**< free when p < this; 0.5 */
 } opx_octree_options;
 
 #define OPX_OCTREE_OPTIONS_INIT \
     {sizeof(opx_octree_options), 0, 0.05, 0.7, 0.4, 0.1192, 0.971, 0.5, 0.5}
-/* Fills *options with the defaults; size is sizeof *options. */
+/** Fills *options with the defaults; size is sizeof *options. */
 OPX_API opx_status opx_octree_options_init(opx_octree_options *options, size_t size);
 
-/* Creates an empty octree.  options may be NULL (defaults). */
+/** Creates an empty octree.  options may be NULL (defaults). */
 OPX_API opx_status opx_octree_create(const opx_octree_options *options, opx_octree **out);
-/* Destroys the octree; NULL is a no-op. */
+/** Destroys the octree; NULL is a no-op. */
 OPX_API void opx_octree_destroy(opx_octree *tree);
-/* Removes every cell; the options stay. */
+/** Removes every cell; the options stay. */
 OPX_API opx_status opx_octree_clear(opx_octree *tree);
-/* Copies the octree's options (resolution of a loaded map included). */
+/** Copies the octree's options (resolution of a loaded map included). */
 OPX_API opx_status opx_octree_get_options(const opx_octree *tree, opx_octree_options *out);
 
 /* ---- Inserting sensor frames ------------------------------------------ */
 
-/* Ray-cast: cells along each ray become more free, the endpoint cell more
+/** Ray-cast: cells along each ray become more free, the endpoint cell more
  * occupied (OctoMap's insertPointCloud: each cell is updated once per
  * frame, an endpoint wins over a ray). */
 #define OPX_INSERT_RAYCAST 0
-/* Endpoints only: each endpoint cell gets one hit; no free space. */
+/** Endpoints only: each endpoint cell gets one hit; no free space. */
 #define OPX_INSERT_ENDPOINTS 1
 
 typedef struct opx_insert_options {
     uint32_t struct_size;
-    int32_t mode;         /* OPX_INSERT_RAYCAST (default) or OPX_INSERT_ENDPOINTS */
-    opx_pose sensor_pose; /* the sensor frame in the map frame; identity */
-    /* Points farther than this from the sensor origin (metres) are counted
+    int32_t mode;         /**< OPX_INSERT_RAYCAST (default) or OPX_INSERT_ENDPOINTS */
+    opx_pose sensor_pose; /**< the sensor frame in the map frame; identity */
+    /** Points farther than this from the sensor origin (metres) are counted
      * as out of range and, as in OctoMap, give no occupied cell: in
      * ray-cast mode the ray is cut at max_range and its cells become more
      * free; in endpoint mode the point changes nothing.  <= 0 or +infinity:
      * no limit (the default, -1, OctoMap's "no limit" value); NaN is
      * invalid. */
     double max_range;
-    /* Threads a ray-cast insert may use, the caller's included: 1 (the
+    /** Threads a ray-cast insert may use, the caller's included: 1 (the
      * default) keeps all work on the caller's thread and starts none, as
      * firmware with its own scheduling expects; 0 means one per hardware
      * thread, the choice on a workstation.  The map after an insert does
@@ -101,19 +101,19 @@ typedef struct opx_insert_options {
     {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u}
 OPX_API opx_status opx_insert_options_init(opx_insert_options *options, size_t size);
 
-/* What one insert did.  Every point (every pixel of a depth image) is
+/** What one insert did.  Every point (every pixel of a depth image) is
  * counted once: used + nonfinite + out_of_range + outside_map +
  * pixels_no_return == count (width * height for a depth image). */
 typedef struct opx_insert_report {
     uint32_t struct_size;
     uint32_t reserved0;
     uint64_t points_used;
-    uint64_t points_nonfinite;    /* NaN or infinite coordinates */
-    uint64_t points_out_of_range; /* beyond max_range */
-    uint64_t points_outside_map;  /* outside the octree's addressable cube */
-    uint64_t cells_hit;           /* cells updated as occupied */
-    uint64_t cells_missed;        /* cells updated as free */
-    /* Depth images: pixels without a depth (0; for float32 also NaN,
+    uint64_t points_nonfinite;    /**< NaN or infinite coordinates */
+    uint64_t points_out_of_range; /**< beyond max_range */
+    uint64_t points_outside_map;  /**< outside the octree's addressable cube */
+    uint64_t cells_hit;           /**< cells updated as occupied */
+    uint64_t cells_missed;        /**< cells updated as free */
+    /** Depth images: pixels without a depth (0; for float32 also NaN,
      * infinite or negative), skipped.  0 for opx_octree_insert_points. */
     uint64_t pixels_no_return;
 } opx_insert_report;
@@ -121,7 +121,7 @@ typedef struct opx_insert_report {
 #define OPX_INSERT_REPORT_INIT {sizeof(opx_insert_report), 0, 0, 0, 0, 0, 0, 0, 0}
 OPX_API opx_status opx_insert_report_init(opx_insert_report *report, size_t size);
 
-/*
+/**
  * Inserts one sensor frame.  Successive frames accumulate log-odds.
  * points: `count` points of three coordinates (x, y, z) in the SENSOR frame,
  * each `stride` bytes after the previous (0: packed), of `scalar_type`
@@ -136,7 +136,7 @@ OPX_API opx_status opx_octree_insert_points(opx_octree *tree, const void *points
                                             const opx_insert_options *options,
                                             opx_insert_report *out_report);
 
-/*
+/**
  * An organized depth frame, row after row, each row `width` pixels from
  * left to right.  The library reads it during the call only.
  *   OPX_SCALAR_UINT16: depth in units of 1/depth_scale metres (depth_scale
@@ -149,19 +149,19 @@ OPX_API opx_status opx_octree_insert_points(opx_octree *tree, const void *points
  */
 typedef struct opx_depth_image {
     uint32_t struct_size;
-    int32_t scalar_type;  /* OPX_SCALAR_UINT16 (default) or OPX_SCALAR_FLOAT32 */
-    const void *data;     /* the first row; may be NULL when width or height is 0 */
-    size_t width;         /* pixels per row (columns) */
-    size_t height;        /* rows */
-    size_t row_stride;    /* bytes from a row to the next; 0: packed (width pixels) */
-    double depth_scale;   /* OPX_SCALAR_UINT16: units per metre; 1000 (millimetres) */
+    int32_t scalar_type;  /**< OPX_SCALAR_UINT16 (default) or OPX_SCALAR_FLOAT32 */
+    const void *data;     /**< the first row; may be NULL when width or height is 0 */
+    size_t width;         /**< pixels per row (columns) */
+    size_t height;        /**< rows */
+    size_t row_stride;    /**< bytes from a row to the next; 0: packed (width pixels) */
+    double depth_scale;   /**< OPX_SCALAR_UINT16: units per metre; 1000 (millimetres) */
 } opx_depth_image;
 
 #define OPX_DEPTH_IMAGE_INIT \
     {sizeof(opx_depth_image), OPX_SCALAR_UINT16, NULL, 0, 0, 0, 1000.0}
 OPX_API opx_status opx_depth_image_init(opx_depth_image *image, size_t size);
 
-/*
+/**
  * A pinhole camera without distortion (a ROS CameraInfo's K: fx = K[0],
  * cx = K[2], fy = K[4], cy = K[5]), in pixels.  fx and fy must be positive,
  * cx and cy finite.  The defaults are all 0: set every field.
@@ -169,16 +169,16 @@ OPX_API opx_status opx_depth_image_init(opx_depth_image *image, size_t size);
 typedef struct opx_camera_intrinsics {
     uint32_t struct_size;
     uint32_t reserved0;
-    double fx; /* horizontal focal length (x), pixels */
-    double fy; /* vertical focal length (y), pixels */
-    double cx; /* principal point: column (x), pixels */
-    double cy; /* principal point: row (y), pixels */
+    double fx; /**< horizontal focal length (x), pixels */
+    double fy; /**< vertical focal length (y), pixels */
+    double cx; /**< principal point: column (x), pixels */
+    double cy; /**< principal point: row (y), pixels */
 } opx_camera_intrinsics;
 
 #define OPX_CAMERA_INTRINSICS_INIT {sizeof(opx_camera_intrinsics), 0, 0.0, 0.0, 0.0, 0.0}
 OPX_API opx_status opx_camera_intrinsics_init(opx_camera_intrinsics *intrinsics, size_t size);
 
-/*
+/**
  * Inserts one depth frame, exactly as opx_octree_insert_points inserts the
  * points it back-projects (same options, same report).
  *
@@ -208,43 +208,43 @@ OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_dep
 
 /* ---- Reading the map --------------------------------------------------- */
 
-/* The cell holding a point (map frame). */
+/** The cell holding a point (map frame). */
 typedef struct opx_cell_info {
     uint32_t struct_size;
-    int32_t cell_class;  /* OPX_CELL_* */
-    double probability;  /* occupancy probability; 0.5 (the prior) when unknown */
-    double center[3];    /* centre of the cell, map frame, metres */
-    double size;         /* edge of the cell, metres.  For unknown space:
+    int32_t cell_class;  /**< OPX_CELL_* */
+    double probability;  /**< occupancy probability; 0.5 (the prior) when unknown */
+    double center[3];    /**< centre of the cell, map frame, metres */
+    double size;         /**< edge of the cell, metres.  For unknown space:
                           * the largest unobserved cube holding the point */
-    uint32_t depth;      /* 0 (root cube) .. 16 (finest cells) */
+    uint32_t depth;      /**< 0 (root cube) .. 16 (finest cells) */
     uint32_t reserved0;
 } opx_cell_info;
 
 #define OPX_CELL_INFO_INIT {sizeof(opx_cell_info), 0, 0.0, {0.0, 0.0, 0.0}, 0.0, 0, 0}
 OPX_API opx_status opx_cell_info_init(opx_cell_info *info, size_t size);
 
-/* Classifies the point (x, y, z, map frame).  A point outside the
+/** Classifies the point (x, y, z, map frame).  A point outside the
  * addressable cube is an invalid argument.  out->struct_size must be set. */
 OPX_API opx_status opx_octree_classify(const opx_octree *tree, const double point[3],
                                        opx_cell_info *out);
 
 typedef struct opx_octree_stats {
     uint32_t struct_size;
-    int32_t has_occupied; /* 1 when occupied_min/max are set, else 0 */
-    double resolution;    /* metres */
+    int32_t has_occupied; /**< 1 when occupied_min/max are set, else 0 */
+    double resolution;    /**< metres */
     uint64_t leaves_occupied;
     uint64_t leaves_uncertain;
     uint64_t leaves_free;
-    uint64_t inner_nodes;  /* nodes with children, the root included */
-    uint64_t memory_bytes; /* bytes the tree holds: nodes, in blocks of 8 children (free blocks too) */
-    /* Tight bounds of the occupied cells' boxes (not the root cube), map
+    uint64_t inner_nodes;  /**< nodes with children, the root included */
+    uint64_t memory_bytes; /**< bytes the tree holds: nodes, in blocks of 8 children (free blocks too) */
+    /** Tight bounds of the occupied cells' boxes (not the root cube), map
      * frame; zeros when has_occupied is 0. */
     double occupied_min[3];
     double occupied_max[3];
-    /* Tight bounds of all observed cells' boxes; zeros when the map is empty. */
+    /** Tight bounds of all observed cells' boxes; zeros when the map is empty. */
     double known_min[3];
     double known_max[3];
-    /* Occupied leaves that keep the box of their sensed points
+    /** Occupied leaves that keep the box of their sensed points
      * (OPX_OBSTACLE_POINT_EXTENTS); the others are whole cubes. */
     uint64_t leaves_with_extent;
 } opx_octree_stats;
@@ -253,20 +253,20 @@ typedef struct opx_octree_stats {
     {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0}
 OPX_API opx_status opx_octree_stats_init(opx_octree_stats *stats, size_t size);
 
-/* Counts, bounds and memory of the map (one pass over the leaves). */
+/** Counts, bounds and memory of the map (one pass over the leaves). */
 OPX_API opx_status opx_octree_get_stats(const opx_octree *tree, opx_octree_stats *out);
 
-/* One leaf of the map: the paper's "collision map" entry.  A fixed layout
+/** One leaf of the map: the paper's "collision map" entry.  A fixed layout
  * (never extended; a richer leaf would get a new type and function). */
 typedef struct opx_leaf {
-    double center[3];   /* map frame, metres */
-    double size;        /* edge, metres */
-    double probability; /* occupancy probability */
-    int32_t cell_class; /* OPX_CELL_* */
-    uint32_t depth;     /* 0 .. 16 */
+    double center[3];   /**< map frame, metres */
+    double size;        /**< edge, metres */
+    double probability; /**< occupancy probability */
+    int32_t cell_class; /**< OPX_CELL_* */
+    uint32_t depth;     /**< 0 .. 16 */
 } opx_leaf;
 
-/*
+/**
  * Copies the leaves whose class is in class_mask (OPX_MASK_*) into
  * out_leaves, in depth-first order.  *out_count gets the number of such
  * leaves.  When it exceeds capacity, the first `capacity` are written and
@@ -279,16 +279,16 @@ OPX_API opx_status opx_octree_get_leaves(const opx_octree *tree, uint32_t class_
 
 /* ---- Files and messages ----------------------------------------------- */
 
-/* Loading: OPX_FORMAT_AUTO reads the header.  Saving: AUTO picks by the
+/** Loading: OPX_FORMAT_AUTO reads the header.  Saving: AUTO picks by the
  * path's extension (.bt or .ot); for memory it means BT. */
 #define OPX_FORMAT_AUTO 0
-/* OctoMap binary (.bt): per leaf only occupied/free; a loaded leaf gets
+/** OctoMap binary (.bt): per leaf only occupied/free; a loaded leaf gets
  * the clamping bound of its class as probability. */
 #define OPX_FORMAT_BT 1
-/* OctoMap full (.ot, type "OcTree"): the log-odds of every node. */
+/** OctoMap full (.ot, type "OcTree"): the log-odds of every node. */
 #define OPX_FORMAT_OT 2
 
-/*
+/**
  * Loads a .bt or .ot file (OctoMap 1.x, type OcTree).  The resolution comes
  * from the file; the other fields of options (may be NULL: defaults) set the
  * probabilities and thresholds.  Corrupt or truncated data gives
@@ -296,10 +296,10 @@ OPX_API opx_status opx_octree_get_leaves(const opx_octree *tree, uint32_t class_
  */
 OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_options *options,
                                         opx_octree **out);
-/* The same from the bytes of such a file held in memory. */
+/** The same from the bytes of such a file held in memory. */
 OPX_API opx_status opx_octree_load_memory(const void *data, size_t size,
                                           const opx_octree_options *options, opx_octree **out);
-/*
+/**
  * Loads the `data` field of a ROS octomap_msgs/Octomap message: `binary`
  * nonzero for a binary map (.bt body), zero for a full map (.ot body).  The
  * caller checks the message's `id`: only "OcTree" maps are read correctly.
@@ -309,10 +309,10 @@ OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_
                                            double resolution, const opx_octree_options *options,
                                            opx_octree **out);
 
-/* Saves to a file; format OPX_FORMAT_AUTO, _BT or _OT. */
+/** Saves to a file; format OPX_FORMAT_AUTO, _BT or _OT. */
 OPX_API opx_status opx_octree_save_file(const opx_octree *tree, const char *path,
                                         int32_t format);
-/*
+/**
  * Saves the bytes of a .bt/.ot file into buffer.  *out_size gets the size
  * needed; OPX_ERROR_BUFFER_TOO_SMALL when it exceeds capacity (nothing
  * written; buffer may be NULL when capacity is 0).

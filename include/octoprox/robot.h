@@ -60,15 +60,15 @@ extern "C" {
 
 typedef struct opx_urdf_options {
     uint32_t struct_size;
-    uint32_t reserved0;              /* padding; keep 0 */
-    /* Directories that resolve package:// URIs (see above); the strings
+    uint32_t reserved0;              /**< padding; keep 0 */
+    /** Directories that resolve package:// URIs (see above); the strings
      * are read during the call only. */
     const char *const *package_dirs;
     size_t package_dir_count;
-    /* Base of relative mesh paths.  NULL: the URDF file's folder
+    /** Base of relative mesh paths.  NULL: the URDF file's folder
      * (opx_linkset_load_urdf_file) or the current directory (_string). */
     const char *base_dir;
-    /* Optional SRDF file: its <disable_collisions link1 link2> pairs are
+    /** Optional SRDF file: its <disable_collisions link1 link2> pairs are
      * read (and only those): self-collision skips them (self_collision.h),
      * see also opx_linkset_get_disabled_pair.  NULL: none. */
     const char *srdf_path;
@@ -77,7 +77,7 @@ typedef struct opx_urdf_options {
 #define OPX_URDF_OPTIONS_INIT {sizeof(opx_urdf_options), 0, NULL, 0, NULL, NULL}
 OPX_API opx_status opx_urdf_options_init(opx_urdf_options *options, size_t size);
 
-/*
+/**
  * A new link set from a URDF file or an XML string (options NULL:
  * defaults).  All link poses start at FK with every joint at 0 and the
  * root link at the map origin.  Errors: OPX_ERROR_IO (file or mesh cannot
@@ -105,22 +105,22 @@ OPX_API opx_status opx_linkset_load_urdf_string(const char *xml, const opx_urdf_
 #define OPX_JOINT_FLOATING 4
 #define OPX_JOINT_PLANAR 5
 
-/* No mimic joint / no link. */
+/** No mimic joint / no link. */
 #define OPX_JOINT_NONE UINT32_MAX
 
 typedef struct opx_joint_info {
     uint32_t struct_size;
-    int32_t type;                /* OPX_JOINT_* */
-    const char *name;            /* valid while the link set lives */
-    uint32_t parent_link;        /* link indices in the set */
+    int32_t type;                /**< OPX_JOINT_* */
+    const char *name;            /**< valid while the link set lives */
+    uint32_t parent_link;        /**< link indices in the set */
     uint32_t child_link;
-    double axis[3];              /* unit axis in the child link frame */
-    opx_pose origin;             /* child link frame in the parent link frame at 0 */
-    int32_t has_limits;          /* 1 when the URDF has a <limit> element */
-    uint32_t mimic_joint;        /* joint this one mimics, or OPX_JOINT_NONE */
-    double lower, upper;         /* position limits (m or rad); continuous: -inf, +inf */
-    double velocity, effort;     /* as in the URDF (m/s or rad/s; N or N m); 0 when absent */
-    double mimic_multiplier;     /* position = multiplier * master + offset */
+    double axis[3];              /**< unit axis in the child link frame */
+    opx_pose origin;             /**< child link frame in the parent link frame at 0 */
+    int32_t has_limits;          /**< 1 when the URDF has a <limit> element */
+    uint32_t mimic_joint;        /**< joint this one mimics, or OPX_JOINT_NONE */
+    double lower, upper;         /**< position limits (m or rad); continuous: -inf, +inf */
+    double velocity, effort;     /**< as in the URDF (m/s or rad/s; N or N m); 0 when absent */
+    double mimic_multiplier;     /**< position = multiplier * master + offset */
     double mimic_offset;
 } opx_joint_info;
 
@@ -128,15 +128,15 @@ typedef struct opx_joint_info {
     {0.0, 0.0, 0.0}, OPX_POSE_IDENTITY, 0, OPX_JOINT_NONE, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0}
 OPX_API opx_status opx_joint_info_init(opx_joint_info *info, size_t size);
 
-/* Number of joints (0 for a set not made from URDF). */
+/** Number of joints (0 for a set not made from URDF). */
 OPX_API opx_status opx_linkset_get_joint_count(const opx_linkset *links, uint32_t *out_count);
-/* The joint named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
+/** The joint named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
 OPX_API opx_status opx_linkset_find_joint(const opx_linkset *links, const char *name,
                                           uint32_t *out_joint);
 OPX_API opx_status opx_linkset_get_joint_info(const opx_linkset *links, uint32_t joint,
                                               opx_joint_info *out);
 
-/*
+/**
  * FK: sets every joint position and then every link pose in the map frame
  * (and refits the link set like opx_linkset_set_poses).  `positions` has
  * `count` = joint count values in model order; values of fixed, floating
@@ -149,21 +149,21 @@ OPX_API opx_status opx_linkset_get_joint_info(const opx_linkset *links, uint32_t
  */
 OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const double *positions,
                                                    size_t count, const opx_pose *base_pose);
-/* As above, but only the `count` named joints change; the others keep
+/** As above, but only the `count` named joints change; the others keep
  * their last values (initially 0).  An unknown name is an invalid
  * argument (the name is in the message) and changes nothing. */
 OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links,
                                                          const char *const *names,
                                                          const double *positions, size_t count,
                                                          const opx_pose *base_pose);
-/* The current joint positions in model order, as FK uses them (mimic
+/** The current joint positions in model order, as FK uses them (mimic
  * joints: their computed value; fixed, floating, planar: 0).  *out_count
  * gets the joint count; capacity below it: OPX_ERROR_BUFFER_TOO_SMALL
  * (nothing written; out may then be NULL). */
 OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, double *out,
                                                    size_t capacity, size_t *out_count);
 
-/* SRDF <disable_collisions> pairs as the file lists them: count, and the
+/** SRDF <disable_collisions> pairs as the file lists them: count, and the
  * two link indices of pair i.  Loading disables each in the link set's
  * self-collision pairs (opx_linkset_get_pair_enabled); later calls to
  * opx_linkset_set_pair_enabled change the pairs, not this list. */
@@ -176,14 +176,14 @@ OPX_API opx_status opx_linkset_get_disabled_pair(const opx_linkset *links, uint3
  * Aliases kept for compatibility: each behaves exactly as the function
  * named in its comment (its errors name the alias).  Use those names.
  */
-/* Alias of opx_linkset_get_joint_count. */
+/** Alias of opx_linkset_get_joint_count. */
 OPX_API opx_status opx_linkset_joint_count(const opx_linkset *links, uint32_t *out_count);
-/* Alias of opx_linkset_get_joint_info. */
+/** Alias of opx_linkset_get_joint_info. */
 OPX_API opx_status opx_linkset_joint_info(const opx_linkset *links, uint32_t joint,
                                           opx_joint_info *out);
-/* Alias of opx_linkset_get_disabled_pair_count. */
+/** Alias of opx_linkset_get_disabled_pair_count. */
 OPX_API opx_status opx_linkset_disabled_pair_count(const opx_linkset *links, uint32_t *out_count);
-/* Alias of opx_linkset_get_disabled_pair. */
+/** Alias of opx_linkset_get_disabled_pair. */
 OPX_API opx_status opx_linkset_disabled_pair(const opx_linkset *links, uint32_t pair,
                                              uint32_t *out_link1, uint32_t *out_link2);
 

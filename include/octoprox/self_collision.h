@@ -39,11 +39,11 @@ extern "C" {
 
 typedef struct opx_self_collision_request {
     uint32_t struct_size;
-    /* 0: answer yes/no only; 1 (default): stop at the first touching pair
+    /** 0: answer yes/no only; 1 (default): stop at the first touching pair
      * of shapes and report it; N: collect up to N contacts, one per
      * touching pair of shapes (UINT32_MAX: all). */
     uint32_t max_contacts;
-    /* 1: each contact also gets its penetration depth, normal and point. */
+    /** 1: each contact also gets its penetration depth, normal and point. */
     int32_t compute_penetration;
     int32_t reserved0;
 } opx_self_collision_request;
@@ -53,28 +53,28 @@ OPX_API opx_status opx_self_collision_request_init(opx_self_collision_request *r
 
 typedef struct opx_self_collision_result {
     uint32_t struct_size;
-    int32_t collided;        /* 1 when two shapes of a checked pair of links touch */
-    uint64_t contact_count;  /* contacts held by the query (opx_query_get_self_contact) */
-    /* 1 when a touching pair beyond the first max_contacts was left out
+    int32_t collided;        /**< 1 when two shapes of a checked pair of links touch */
+    uint64_t contact_count;  /**< contacts held by the query (opx_query_get_self_contact) */
+    /** 1 when a touching pair beyond the first max_contacts was left out
      * (with max_contacts 0 or 1 the check stops at the first: 0). */
     int32_t truncated;
     uint32_t reserved0;
-    uint64_t link_pairs;     /* checked pairs of links whose bounding boxes overlap */
-    uint64_t narrow_tests;   /* exact tests between convex pieces (a cost measure) */
+    uint64_t link_pairs;     /**< checked pairs of links whose bounding boxes overlap */
+    uint64_t narrow_tests;   /**< exact tests between convex pieces (a cost measure) */
 } opx_self_collision_result;
 
 #define OPX_SELF_COLLISION_RESULT_INIT {sizeof(opx_self_collision_result), 0, 0, 0, 0, 0, 0}
 OPX_API opx_status opx_self_collision_result_init(opx_self_collision_result *result, size_t size);
 
-/* Two shapes of two links that touch; link_a < link_b. */
+/** Two shapes of two links that touch; link_a < link_b. */
 typedef struct opx_self_contact {
     uint32_t struct_size;
-    uint32_t link_a;         /* indices in the link set */
-    uint32_t shape_a;        /* index within link_a */
+    uint32_t link_a;         /**< indices in the link set */
+    uint32_t shape_a;        /**< index within link_a */
     uint32_t link_b;
     uint32_t shape_b;
     uint32_t reserved0;
-    /* With compute_penetration (else zeros): how deep the padded shapes
+    /** With compute_penetration (else zeros): how deep the padded shapes
      * overlap (metres, >= 0; 0 when only touching), the unit direction
      * link_a went into link_b (moving link_a by -depth * normal, or link_b
      * by +depth * normal, separates the pair), and the contact point:
@@ -89,7 +89,7 @@ typedef struct opx_self_contact {
     {0.0, 0.0, 0.0}}
 OPX_API opx_status opx_self_contact_init(opx_self_contact *contact, size_t size);
 
-/*
+/**
  * Does the link set (its checked pairs, padding included, at the current
  * poses) collide with itself?  request may be NULL (defaults).  The
  * contacts stay in the query until its next self-collision query; the
@@ -98,17 +98,17 @@ OPX_API opx_status opx_self_contact_init(opx_self_contact *contact, size_t size)
 OPX_API opx_status opx_query_self_collide(opx_query *query, const opx_linkset *links,
                                           const opx_self_collision_request *request,
                                           opx_self_collision_result *out_result);
-/* Contact `index` (< contact_count) of the last self-collision query. */
+/** Contact `index` (< contact_count) of the last self-collision query. */
 OPX_API opx_status opx_query_get_self_contact(const opx_query *query, size_t index,
                                               opx_self_contact *out_contact);
 
 typedef struct opx_self_distance_request {
     uint32_t struct_size;
-    /* 1: when shapes overlap, the distance is minus the deepest penetration
+    /** 1: when shapes overlap, the distance is minus the deepest penetration
      * over the touching pairs, with the witnesses at each shape's point
      * deepest in the other.  0 (default): overlap is distance 0. */
     int32_t signed_distance;
-    /* Pairs farther than this (metres) are not measured: the result is then
+    /** Pairs farther than this (metres) are not measured: the result is then
      * found = 0, distance = cutoff ("at least cutoff").  0 (default) or
      * +infinity: no cutoff. */
     double cutoff;
@@ -119,26 +119,26 @@ OPX_API opx_status opx_self_distance_request_init(opx_self_distance_request *req
 
 typedef struct opx_self_distance_result {
     uint32_t struct_size;
-    int32_t found;           /* 1: a checked pair within the cutoff; else distance is
+    int32_t found;           /**< 1: a checked pair within the cutoff; else distance is
                               * the cutoff (+infinity without one, or without pairs) */
-    int32_t collided;        /* 1 when the distance is <= 1e-9 m (the touch rule) */
-    uint32_t link_a;         /* the nearest pair: link_a < link_b, and their shapes */
+    int32_t collided;        /**< 1 when the distance is <= 1e-9 m (the touch rule) */
+    uint32_t link_a;         /**< the nearest pair: link_a < link_b, and their shapes */
     uint32_t shape_a;
     uint32_t link_b;
     uint32_t shape_b;
     uint32_t reserved0;
-    double distance;         /* metres, paddings included; >= 0 unless signed */
-    double point_on_a[3];    /* witness on link_a's padded shape, map frame */
-    double point_on_b[3];    /* witness on link_b's; the two are |distance| apart */
-    uint64_t link_pairs;     /* pairs of links measured beyond their bounding boxes */
-    uint64_t narrow_tests;   /* exact distances between convex pieces */
+    double distance;         /**< metres, paddings included; >= 0 unless signed */
+    double point_on_a[3];    /**< witness on link_a's padded shape, map frame */
+    double point_on_b[3];    /**< witness on link_b's; the two are |distance| apart */
+    uint64_t link_pairs;     /**< pairs of links measured beyond their bounding boxes */
+    uint64_t narrow_tests;   /**< exact distances between convex pieces */
 } opx_self_distance_result;
 
 #define OPX_SELF_DISTANCE_RESULT_INIT {sizeof(opx_self_distance_result), 0, 0, 0, 0, 0, 0, 0, \
     0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, 0}
 OPX_API opx_status opx_self_distance_result_init(opx_self_distance_result *result, size_t size);
 
-/*
+/**
  * The minimum distance between the link set's checked pairs of links
  * (padding included), with witness points and the two links and shapes.
  * request may be NULL (defaults).
@@ -151,13 +151,13 @@ OPX_API opx_status opx_query_self_distance(opx_query *query, const opx_linkset *
 
 typedef struct opx_pair_sampling_options {
     uint32_t struct_size;
-    uint32_t samples;        /* random configurations (default 10000, as MoveIt's) */
-    uint64_t seed;           /* of the generator (default 1): the same seed, the same pairs */
-    /* 1: also disable the pairs that collide in EVERY sample (links meeting
+    uint32_t samples;        /**< random configurations (default 10000, as MoveIt's) */
+    uint64_t seed;           /**< of the generator (default 1): the same seed, the same pairs */
+    /** 1: also disable the pairs that collide in EVERY sample (links meeting
      * at their joint: MoveIt's "Adjacent" and "Always" pairs).  0 (default):
      * only the pairs that never collide. */
     int32_t also_always_colliding;
-    /* 1: also disable the pairs that collide at the link set's current
+    /** 1: also disable the pairs that collide at the link set's current
      * poses (MoveIt's "Default" pairs, with the robot at its default
      * configuration).  0 (default): no. */
     int32_t also_colliding_now;
@@ -166,19 +166,19 @@ typedef struct opx_pair_sampling_options {
 #define OPX_PAIR_SAMPLING_OPTIONS_INIT {sizeof(opx_pair_sampling_options), 10000, 1, 0, 0}
 OPX_API opx_status opx_pair_sampling_options_init(opx_pair_sampling_options *options, size_t size);
 
-/* How many pairs each rule disabled (a pair counts once, for the first
+/** How many pairs each rule disabled (a pair counts once, for the first
  * rule in this order that disabled it). */
 typedef struct opx_pair_sampling_result {
     uint32_t struct_size;
-    uint32_t now;            /* colliding at the current poses (also_colliding_now) */
-    uint32_t never;          /* colliding in no sample */
-    uint32_t always;         /* colliding in every sample (also_always_colliding) */
+    uint32_t now;            /**< colliding at the current poses (also_colliding_now) */
+    uint32_t never;          /**< colliding in no sample */
+    uint32_t always;         /**< colliding in every sample (also_always_colliding) */
 } opx_pair_sampling_result;
 
 #define OPX_PAIR_SAMPLING_RESULT_INIT {sizeof(opx_pair_sampling_result), 0, 0, 0}
 OPX_API opx_status opx_pair_sampling_result_init(opx_pair_sampling_result *result, size_t size);
 
-/*
+/**
  * Disables every pair of links that never collides over `samples` random
  * configurations: each moving joint uniform within its limits (continuous
  * joints, and revolute joints without limits, over [-pi, pi]; prismatic

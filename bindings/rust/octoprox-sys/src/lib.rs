@@ -3,6 +3,9 @@
 //! fails when they drift from the headers).  bindgen's layout tests run with
 //! `cargo test` and check every struct against the C compiler's layout.
 //!
+//! The items carry the headers' doc comments, written for C readers:
+//! `K[0]` or `out_collided[i]` there index arrays, they are not links.
+//!
 //! Besides the generated items this crate gives every versioned struct a
 //! `Default` filled by its `opx_x_init` function (the `OPX_X_INIT` values,
 //! `struct_size` included), and `opx_pose` the identity.
@@ -13,7 +16,8 @@
     non_snake_case,
     dead_code,
     deref_nullptr,
-    clippy::all
+    clippy::all,
+    rustdoc::broken_intra_doc_links
 )]
 mod generated {
     include!("bindings.rs");
