@@ -20,7 +20,7 @@ import ctypes
 import numpy as np
 
 from . import _structs as s
-from ._errors import ERROR_INVALID_ARGUMENT, BufferTooSmallError, error_for
+from ._errors import BufferTooSmallError, invalid
 
 SCALAR_FLOAT32 = 1
 SCALAR_FLOAT64 = 2
@@ -33,10 +33,6 @@ COST_BOX_DTYPE = np.dtype(s.CostBox)
 SELF_CONTACT_DTYPE = np.dtype(s.SelfContact)
 LEAF_DTYPE = np.dtype(s.Leaf)
 POSE_SIZE = 7 * 8
-
-
-def invalid(message):
-    return error_for(ERROR_INVALID_ARGUMENT, message)
 
 
 class PointView:
@@ -86,15 +82,15 @@ def _direct_fields(arr):
 def _packed_xyz(points, where):
     if isinstance(points, np.ndarray) and points.dtype.names is not None:
         if not all(name in points.dtype.names for name in "xyz"):
-            raise invalid(f"{where}: a structured array needs fields x, y and z")
+            raise invalid("a structured array needs fields x, y and z", where)
         points = np.stack([points["x"], points["y"], points["z"]], axis=-1)
     try:
         packed = np.ascontiguousarray(points, dtype=np.float64)
     except (TypeError, ValueError) as error:
-        raise invalid(f"{where}: points are not numbers ({error})") from error
+        raise invalid(f"points are not numbers ({error})", where) from error
     if packed.ndim != 2 or packed.shape[1] < 3:
-        raise invalid(f"{where}: points must have shape (N, 3) or more columns, "
-                      f"got {packed.shape}")
+        raise invalid(f"points must have shape (N, 3) or more columns, "
+                      f"got {packed.shape}", where)
     return np.ascontiguousarray(packed[:, :3])
 
 
@@ -114,15 +110,15 @@ def depth_view(depth, where):
     floating-point types as one float32 copy, anything else refused."""
     arr = depth if isinstance(depth, np.ndarray) else np.asarray(depth)
     if arr.ndim != 2:
-        raise invalid(f"{where}: a depth image has 2 dimensions (rows, columns), "
-                      f"got shape {arr.shape}")
+        raise invalid(f"a depth image has 2 dimensions (rows, columns), "
+                      f"got shape {arr.shape}", where)
     if arr.dtype.kind == "u" and arr.dtype.itemsize == 2:
         target, scalar = np.dtype(np.uint16), SCALAR_UINT16
     elif arr.dtype.kind == "f":
         target, scalar = np.dtype(np.float32), SCALAR_FLOAT32
     else:
-        raise invalid(f"{where}: depth must be uint16 (with depth_scale) or floating-point "
-                      f"metres, got {arr.dtype}")
+        raise invalid(f"depth must be uint16 (with depth_scale) or floating-point "
+                      f"metres, got {arr.dtype}", where)
     adjacent = arr.shape[1] < 2 or arr.strides[1] == arr.itemsize
     rows_apart = arr.shape[0] < 2 or arr.strides[0] >= arr.shape[1] * arr.itemsize
     if arr.dtype != target or not adjacent or not rows_apart:
@@ -136,8 +132,8 @@ def pose_array(poses, where, ndim):
     of 3 numbers get the identity orientation (a copy)."""
     arr = poses if isinstance(poses, np.ndarray) else np.asarray(poses, dtype=np.float64)
     if arr.ndim != ndim or arr.shape[-1] not in (3, 7):
-        raise invalid(f"{where}: poses must have {ndim} dimensions, the last of 7 "
-                      f"(x y z qx qy qz qw) or 3 numbers; got shape {arr.shape}")
+        raise invalid(f"poses must have {ndim} dimensions, the last of 7 "
+                      f"(x y z qx qy qz qw) or 3 numbers; got shape {arr.shape}", where)
     if arr.shape[-1] == 3:
         identity = np.zeros(arr.shape[:-1] + (4,))
         identity[..., 3] = 1.0
@@ -162,7 +158,7 @@ def vertex_array(vertices, where):
     """(N, 3) float64 vertices by address and row stride (else one copy)."""
     arr = vertices if isinstance(vertices, np.ndarray) else np.asarray(vertices, np.float64)
     if arr.ndim != 2 or arr.shape[1] != 3:
-        raise invalid(f"{where}: vertices must have shape (N, 3), got {arr.shape}")
+        raise invalid(f"vertices must have shape (N, 3), got {arr.shape}", where)
     if arr.dtype != np.float64 or not arr.dtype.isnative or arr.strides[1] != 8 or \
             (len(arr) > 1 and arr.strides[0] < 24):
         arr = np.ascontiguousarray(arr, dtype=np.float64)
@@ -174,8 +170,8 @@ def box_array(boxes, where):
     stride (else one copy)."""
     arr = boxes if isinstance(boxes, np.ndarray) else np.asarray(boxes, np.float64)
     if arr.ndim != 2 or arr.shape[1] != 6:
-        raise invalid(f"{where}: boxes must have shape (N, 6): min x y z, max x y z; "
-                      f"got {arr.shape}")
+        raise invalid(f"boxes must have shape (N, 6): min x y z, max x y z; "
+                      f"got {arr.shape}", where)
     if arr.dtype != np.float64 or not arr.dtype.isnative or arr.strides[1] != 8 or \
             (len(arr) > 1 and arr.strides[0] < 48):
         arr = np.ascontiguousarray(arr, dtype=np.float64)
@@ -186,9 +182,9 @@ def triangle_array(triangles, where):
     """(M, 3) packed uint32 vertex indices (a copy unless already so)."""
     arr = np.asarray(triangles)
     if arr.ndim != 2 or arr.shape[1] != 3:
-        raise invalid(f"{where}: triangles must have shape (M, 3), got {arr.shape}")
+        raise invalid(f"triangles must have shape (M, 3), got {arr.shape}", where)
     if arr.size and (arr.min() < 0 or arr.max() > 0xFFFFFFFF):
-        raise invalid(f"{where}: a triangle index is out of the uint32 range")
+        raise invalid("a triangle index is out of the uint32 range", where)
     return np.ascontiguousarray(arr, dtype=np.uint32)
 
 

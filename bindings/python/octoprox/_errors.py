@@ -1,11 +1,14 @@
 """Exceptions raised for the library's status codes.
 
-Every exception carries ``status`` (the negative ``opx_status``) and
-``message`` (the library's text, naming the function and the argument).
+Every exception carries ``status`` (the negative ``opx_status``),
+``message`` (the library's text, naming the C function and the argument)
+and ``where`` (the Python method called, e.g. "Query.collide"; None for a
+direct call of ``octoprox.lib``); ``str(error)`` is ``where: message``.
 Where a builtin exception fits, the class also derives from it, so
 ``except ValueError`` catches invalid arguments and corrupt data,
 ``except MemoryError`` out-of-memory and ``except OSError`` I/O errors.
 """
+from typing import Optional
 
 OK = 0
 ERROR_INVALID_ARGUMENT = -1
@@ -19,17 +22,23 @@ ERROR_INTERNAL = -8
 
 
 class OctoproxError(Exception):
-    """A failed call: ``status`` and ``message``."""
+    """A failed call: ``status`` (the negative opx_status), ``message``
+    (what failed, as the library says it) and ``where`` (the Python
+    method, or None)."""
 
-    def __init__(self, status, message):
+    def __init__(self, status: int, message: str, where: Optional[str] = None) -> None:
         # Only the message goes to the base classes: OSError would take two
         # arguments as errno and strerror.
         super().__init__(message)
         self.status = status
         self.message = message
+        self.where = where
 
-    def __str__(self):
-        return self.message
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+    def __reduce__(self):
+        return (type(self), (self.status, self.message, self.where))
 
 
 class InvalidArgumentError(OctoproxError, ValueError):
@@ -77,6 +86,11 @@ _BY_STATUS = {
 }
 
 
-def error_for(status, message):
+def error_for(status: int, message: str, where: Optional[str] = None) -> OctoproxError:
     """The exception for a status code (OctoproxError for unknown codes)."""
-    return _BY_STATUS.get(status, OctoproxError)(status, message)
+    return _BY_STATUS.get(status, OctoproxError)(status, message, where)
+
+
+def invalid(message: str, where: Optional[str] = None) -> OctoproxError:
+    """An InvalidArgumentError raised by the bindings themselves."""
+    return InvalidArgumentError(ERROR_INVALID_ARGUMENT, message, where)

@@ -207,6 +207,15 @@ _declare(lib)
 _check_version(lib)
 
 
+def unchecked(name):
+    """A second function object for ``name``, with its argtypes and
+    restype but no errcheck: the query methods test the status themselves
+    (one Python call less on every query).  ``lib.name`` stays checked."""
+    function = lib[name]  # item access makes a new object; attributes are cached
+    function.restype, function.argtypes = SIGNATURES[name]
+    return function
+
+
 def init_struct(struct_type, **fields):
     """A struct filled with the library's defaults (its opx_x_init), then
     with ``fields``; an unknown field name is a TypeError."""

@@ -1,37 +1,32 @@
 """ctypes mirrors of the C structs of include/octoprox/ (same field names,
-same order; the tests check every size against the library's own)."""
+same order; the tests check every size against the library's own): the
+octree's, the link set's, the robot's and the files' here, the queries' in
+_query_structs (imported here too).
+
+Units are metres, radians and m^3 (costs); points and poses are in the map
+frame unless a docstring says otherwise.  Flags read as bool and class or
+kind codes as IntEnum members (typed_fields at the end of each file).
+"""
 import ctypes
-from ctypes import c_double, c_int32, c_size_t, c_uint32, c_uint64, c_int64, c_void_p
+from ctypes import c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
 
-D3 = c_double * 3
-
-
-class Struct(ctypes.Structure):
-    """A C struct with a readable repr and ``to_dict()``."""
-
-    def to_dict(self):
-        out = {}
-        for name, _ in self._fields_:
-            value = getattr(self, name)
-            if isinstance(value, ctypes.Array):
-                value = tuple(value)
-            elif isinstance(value, Struct):
-                value = value.to_dict()
-            out[name] = value
-        return out
-
-    def __repr__(self):
-        fields = ", ".join(f"{k}={v!r}" for k, v in self.to_dict().items()
-                           if not k.startswith("reserved") and k != "struct_size")
-        return f"{type(self).__name__}({fields})"
-
-
-class Pose(Struct):
-    """position x y z (metres), orientation qx qy qz qw (ROS order)."""
-    _fields_ = [("position", D3), ("orientation", c_double * 4)]
+from ._enums import CellClass, InsertMode, JointType, ShapeKind, converter
+from ._query_structs import (BatchRequest, CollisionRequest, CollisionResult, Contact, CostBox,
+                             DistanceRequest, DistanceResult, MotionRequest, MotionResult,
+                             PathRequest, PathResult, QueryOptions, QueryStats,
+                             SelfCollisionRequest, SelfCollisionResult, SelfContact,
+                             SelfDistanceRequest, SelfDistanceResult)
+from ._struct_base import D3, Pose, Struct, typed_fields
 
 
 class OctreeOptions(Struct):
+    """The options of a new octree (Octree(...) keywords).  resolution:
+    the edge of a finest cell, 1e-6 to 1e6 m (0.05); prob_hit, prob_miss:
+    the updates of a cell holding an endpoint (0.7) and of one a ray
+    passes (0.4); clamp_min, clamp_max: the clamping bounds (0.1192,
+    0.971); occupied_threshold: occupied when p >= it (0.5);
+    free_threshold: free when p < it (0.5; lower it, e.g. 0.3, for an
+    uncertain band)."""
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32), ("resolution", c_double),
                 ("prob_hit", c_double), ("prob_miss", c_double), ("clamp_min", c_double),
                 ("clamp_max", c_double), ("occupied_threshold", c_double),
@@ -39,11 +34,21 @@ class OctreeOptions(Struct):
 
 
 class InsertOptions(Struct):
+    """How a sensor frame is inserted: mode (InsertMode, RAYCAST),
+    sensor_pose (the sensor frame in the map frame, identity), max_range
+    (metres from the sensor; farther points give no occupied cell; <= 0:
+    no limit, the default -1), max_threads (1: the caller's thread only,
+    the default; 0: one per hardware thread; the map does not depend on
+    it)."""
     _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("sensor_pose", Pose),
                 ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32)]
 
 
 class InsertReport(Struct):
+    """What one insert did; every point (or pixel) is counted once:
+    points_used + points_nonfinite + points_out_of_range +
+    points_outside_map + pixels_no_return.  cells_hit: cells updated as
+    occupied; cells_missed: as free."""
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
                 ("points_used", c_uint64), ("points_nonfinite", c_uint64),
                 ("points_out_of_range", c_uint64), ("points_outside_map", c_uint64),
@@ -52,6 +57,10 @@ class InsertReport(Struct):
 
 
 class DepthImage(Struct):
+    """A depth frame as the library reads it (Octree.insert_depth_image
+    fills it from a numpy array): scalar_type (uint16 units of
+    1/depth_scale m, or float32 metres), data, width, height, row_stride
+    (bytes), depth_scale (units per metre, 1000)."""
     _fields_ = [("struct_size", c_uint32), ("scalar_type", c_int32), ("data", c_void_p),
                 ("width", c_size_t), ("height", c_size_t), ("row_stride", c_size_t),
                 ("depth_scale", c_double)]
@@ -65,12 +74,22 @@ class CameraIntrinsics(Struct):
 
 
 class CellInfo(Struct):
+    """The cell holding a point (Octree.classify): cell_class (CellClass),
+    probability (0.5 when unknown), center (map frame, m), size (edge, m;
+    for unknown space the largest unobserved cube holding the point),
+    depth (0 for the root cube to 16 for the finest cells)."""
     _fields_ = [("struct_size", c_uint32), ("cell_class", c_int32), ("probability", c_double),
                 ("center", D3), ("size", c_double), ("depth", c_uint32),
                 ("reserved0", c_uint32)]
 
 
 class OctreeStats(Struct):
+    """Counts, bounds and memory of a map (Octree.stats): resolution (m),
+    leaves_occupied, leaves_uncertain, leaves_free, inner_nodes,
+    memory_bytes; occupied_min/max (tight bounds of the occupied cells,
+    map frame; zeros unless has_occupied), known_min/max (of every
+    observed cell); leaves_with_extent (occupied leaves keeping the box of
+    their sensed points, for ObstacleGeometry.POINT_EXTENTS)."""
     _fields_ = [("struct_size", c_uint32), ("has_occupied", c_int32), ("resolution", c_double),
                 ("leaves_occupied", c_uint64), ("leaves_uncertain", c_uint64),
                 ("leaves_free", c_uint64), ("inner_nodes", c_uint64),
@@ -79,11 +98,18 @@ class OctreeStats(Struct):
 
 
 class Leaf(Struct):
+    """One leaf of the map (a row of Octree.leaves()): center (map frame,
+    m), size (edge, m), probability, cell_class, depth (0 to 16)."""
     _fields_ = [("center", D3), ("size", c_double), ("probability", c_double),
                 ("cell_class", c_int32), ("depth", c_uint32)]
 
 
 class Shape(Struct):
+    """One shape of a link as the library takes it (LinkSet.add_sphere and
+    the other add_* methods fill it): kind (ShapeKind), pose (the shape
+    frame in the link frame), radius, length (cylinder: full; capsule:
+    the cylindrical part), size (box: full edge lengths), vertices and
+    triangles of convex hulls and meshes.  Metres."""
     _fields_ = [("struct_size", c_uint32), ("kind", c_int32), ("pose", Pose),
                 ("radius", c_double), ("length", c_double), ("size", D3),
                 ("vertices", c_void_p), ("vertex_count", c_size_t),
@@ -91,141 +117,25 @@ class Shape(Struct):
                 ("triangle_count", c_size_t)]
 
 
-class QueryOptions(Struct):
-    _fields_ = [("struct_size", c_uint32), ("engine", c_int32), ("refine_steps", c_uint32),
-                ("morton_bits", c_uint32)]
-
-
-class QueryStats(Struct):
-    _fields_ = [("struct_size", c_uint32), ("engine", c_int32), ("boxes", c_uint64),
-                ("builds", c_uint64), ("refine_steps_done", c_uint64),
-                ("sah_ratio", c_double), ("extract_ms", c_double), ("build_ms", c_double)]
-
-
-class CollisionRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
-                ("occupancy_threshold", c_double), ("max_contacts", c_uint32),
-                ("compute_cost", c_int32), ("max_cost_boxes", c_uint32),
-                ("reserved0", c_uint32), ("unknown_probability", c_double),
-                ("region_min", D3), ("region_max", D3), ("compute_penetration", c_int32),
-                ("obstacle_geometry", c_int32)]
-
-
-class CollisionResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("collided", c_int32), ("contact_count", c_uint64),
-                ("truncated", c_int32), ("reserved0", c_uint32), ("narrow_tests", c_uint64),
-                ("total_cost", c_double), ("cost_box_count", c_uint64),
-                ("cost_boxes_found", c_uint64)]
-
-
-class Contact(Struct):
-    _fields_ = [("struct_size", c_uint32), ("link", c_uint32), ("shape", c_uint32),
-                ("cell_class", c_int32), ("cell_center", D3), ("cell_size", c_double),
-                ("cell_probability", c_double), ("depth", c_double), ("normal", D3),
-                ("position", D3)]
-
-
-class CostBox(Struct):
-    _fields_ = [("struct_size", c_uint32), ("link", c_uint32), ("cell_class", c_int32),
-                ("reserved0", c_uint32), ("min", D3), ("max", D3), ("probability", c_double),
-                ("cost", c_double), ("cell_center", D3), ("cell_size", c_double)]
-
-
-class DistanceRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
-                ("occupancy_threshold", c_double), ("abs_err", c_double),
-                ("rel_err", c_double), ("cutoff", c_double), ("per_link", c_int32),
-                ("signed_distance", c_int32), ("obstacle_geometry", c_int32),
-                ("reserved0", c_int32)]
-
-
-class DistanceResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
-                ("cell_class", c_int32), ("link", c_uint32), ("shape", c_uint32),
-                ("distance", c_double), ("point_on_link", D3), ("point_on_cell", D3),
-                ("cell_center", D3), ("cell_size", c_double), ("cell_probability", c_double),
-                ("narrow_tests", c_uint64)]
-
-
-class SelfCollisionRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("max_contacts", c_uint32),
-                ("compute_penetration", c_int32), ("reserved0", c_int32)]
-
-
-class SelfCollisionResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("collided", c_int32), ("contact_count", c_uint64),
-                ("truncated", c_int32), ("reserved0", c_uint32), ("link_pairs", c_uint64),
-                ("narrow_tests", c_uint64)]
-
-
-class SelfContact(Struct):
-    _fields_ = [("struct_size", c_uint32), ("link_a", c_uint32), ("shape_a", c_uint32),
-                ("link_b", c_uint32), ("shape_b", c_uint32), ("reserved0", c_uint32),
-                ("depth", c_double), ("normal", D3), ("position", D3)]
-
-
-class SelfDistanceRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("signed_distance", c_int32), ("cutoff", c_double)]
-
-
-class SelfDistanceResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
-                ("link_a", c_uint32), ("shape_a", c_uint32), ("link_b", c_uint32),
-                ("shape_b", c_uint32), ("reserved0", c_uint32), ("distance", c_double),
-                ("point_on_a", D3), ("point_on_b", D3), ("link_pairs", c_uint64),
-                ("narrow_tests", c_uint64)]
-
-
 class PairSamplingOptions(Struct):
+    """The options of LinkSet.disable_never_colliding_pairs: samples
+    (10000), seed (1), also_always_colliding, also_colliding_now."""
     _fields_ = [("struct_size", c_uint32), ("samples", c_uint32), ("seed", c_uint64),
                 ("also_always_colliding", c_int32), ("also_colliding_now", c_int32)]
 
 
 class PairSamplingResult(Struct):
+    """How many pairs each rule of
+    LinkSet.disable_never_colliding_pairs disabled: now (colliding at the
+    current poses), never (in no sample), always (in every sample)."""
     _fields_ = [("struct_size", c_uint32), ("now", c_uint32), ("never", c_uint32),
                 ("always", c_uint32)]
 
 
-class PathRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
-                ("occupancy_threshold", c_double), ("compute_distance", c_int32),
-                ("compute_cost", c_int32), ("max_cost_boxes", c_uint32),
-                ("obstacle_geometry", c_int32), ("unknown_probability", c_double),
-                ("region_min", D3), ("region_max", D3)]
-
-
-class PathResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("collided", c_int32),
-                ("first_colliding_waypoint", c_int64), ("min_distance", c_double),
-                ("min_distance_waypoint", c_int64), ("total_cost", c_double),
-                ("cost_box_count", c_uint64), ("cost_boxes_found", c_uint64),
-                ("narrow_tests", c_uint64)]
-
-
-class BatchRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
-                ("occupancy_threshold", c_double), ("self_collision", c_int32),
-                ("compute_distance", c_int32), ("distance_cutoff", c_double),
-                ("max_threads", c_uint32), ("obstacle_geometry", c_int32)]
-
-
-class MotionRequest(Struct):
-    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
-                ("occupancy_threshold", c_double), ("resolution", c_double),
-                ("self_collision", c_int32), ("compute_cost", c_int32),
-                ("max_cost_boxes", c_uint32), ("max_threads", c_uint32),
-                ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3),
-                ("obstacle_geometry", c_int32), ("reserved0", c_int32)]
-
-
-class MotionResult(Struct):
-    _fields_ = [("struct_size", c_uint32), ("collided", c_int32),
-                ("first_collision_fraction", c_double), ("steps", c_uint64),
-                ("configurations_checked", c_uint64), ("total_cost", c_double),
-                ("cost_box_count", c_uint64), ("cost_boxes_found", c_uint64)]
-
-
 class UrdfOptions(Struct):
+    """The options of LinkSet.from_urdf: package_dirs (folders or
+    "NAME=DIR" entries resolving package:// meshes), base_dir (relative
+    meshes), srdf_path (its disabled pairs)."""
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
                 ("package_dirs", ctypes.POINTER(ctypes.c_char_p)),
                 ("package_dir_count", c_size_t), ("base_dir", ctypes.c_char_p),
@@ -233,8 +143,12 @@ class UrdfOptions(Struct):
 
 
 class JointInfo(Struct):
-    """One URDF joint; ``name`` is decoded to str, link indices and
-    ``mimic_joint`` are JOINT_NONE when absent."""
+    """One URDF joint (LinkSet.joint_info): type (JointType), name,
+    parent_link and child_link (link indices), axis (unit, child link
+    frame), origin (the child link frame in the parent's at 0),
+    has_limits, mimic_joint, lower and upper (m or rad), velocity,
+    effort, mimic_multiplier and mimic_offset; link indices and
+    mimic_joint are JOINT_NONE when absent."""
     _fields_ = [("struct_size", c_uint32), ("type", c_int32), ("_name", ctypes.c_char_p),
                 ("parent_link", c_uint32), ("child_link", c_uint32), ("axis", D3),
                 ("origin", Pose), ("has_limits", c_int32), ("mimic_joint", c_uint32),
@@ -243,7 +157,8 @@ class JointInfo(Struct):
                 ("mimic_offset", c_double)]
 
     @property
-    def name(self):
+    def name(self) -> str:
+        """The joint's name."""
         return (self._name or b"").decode("utf-8", "replace")
 
     def to_dict(self):
@@ -254,7 +169,9 @@ class JointInfo(Struct):
 
 
 class PointCloudInfo(Struct):
-    """What a PCD or PLY file holds (include/octoprox/io.h)."""
+    """What a PCD or PLY file holds (octoprox.io reads it): format,
+    encoding, has_viewpoint, point_count, finite_count, width and height
+    (an organized cloud's columns and rows), viewpoint (PCD VIEWPOINT)."""
     _fields_ = [("struct_size", c_uint32), ("format", c_int32), ("encoding", c_int32),
                 ("has_viewpoint", c_int32), ("point_count", c_uint64), ("finite_count", c_uint64),
                 ("width", c_uint64), ("height", c_uint64), ("viewpoint", Pose)]
@@ -294,3 +211,12 @@ VERSIONED = {
     JointInfo: "opx_joint_info_init",
     PointCloudInfo: "opx_point_cloud_info_init",
 }
+
+# Flags read as bool, codes as IntEnum members (written back as ints).
+typed_fields(InsertOptions, mode=converter(InsertMode))
+typed_fields(CellInfo, cell_class=converter(CellClass))
+typed_fields(OctreeStats, has_occupied=bool)
+typed_fields(Shape, kind=converter(ShapeKind))
+typed_fields(PairSamplingOptions, also_always_colliding=bool, also_colliding_now=bool)
+typed_fields(JointInfo, type=converter(JointType), has_limits=bool)
+typed_fields(PointCloudInfo, has_viewpoint=bool)

@@ -1,19 +1,43 @@
-"""Many configurations and joint-space motions per call (batch.h): the
-bodies of Query.check_configurations, check_motion and check_motions.
+"""Many configurations and joint-space motions per call (batch.h):
+Query.check_configurations, check_motion and check_motions (Query inherits
+them).
 
-Joint vectors are rows of every joint in model order (LinkSet.joint_names,
-as set_joint_positions takes them).  Arrays go in by address and row stride
-when they are float64 with packed rows, else as one copy.  The library
-runs without the GIL (ctypes releases it), so other Python threads go on
-while a batch is checked.
+The robot is a LinkSet made from URDF.  Joint vectors are rows of every
+joint in model order (LinkSet.joint_names, as set_joint_positions takes
+them; radians or metres).  Forward kinematics runs on the query's own
+copies: the robot does not move.  A configuration collides as
+Query.collide would say after set_joint_positions (and, with
+self_collision, as self_collide), whatever the thread count.  Arrays go in
+by address and row stride when they are float64 with packed rows, else as
+one copy.  The library runs without the GIL (ctypes releases it), so other
+Python threads go on while a batch is checked.
 """
+from __future__ import annotations
+
 import ctypes
+from typing import Optional, Tuple, Union
 
 import numpy as np
 
 from . import _structs as s
-from ._arrays import invalid, pose_array
+from ._arrays import pose_array
+from ._enums import ObstacleGeometry, UnknownPolicy
+from ._errors import invalid
+from ._handle import api
 from ._library import init_struct, lib, make_pose
+from ._requests import RequestCache
+from ._types import ArrayLike, ObstacleGeometryLike, PoseLike, UnknownPolicyLike, Vector3
+from .linkset import LinkSet
+from .octree import Octree
+
+_ZERO3 = (0.0, 0.0, 0.0)
+_CONFIGURATIONS = ("max_threads", "self_collision", "compute_distance", "unknown_policy",
+                   "occupancy_threshold", "distance_cutoff", "obstacle_geometry")
+_MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshold",
+           "compute_cost", "max_cost_boxes", "unknown_probability", "region_min", "region_max",
+           "obstacle_geometry")
+_MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
+            "occupancy_threshold", "obstacle_geometry")
 
 
 def joint_rows(q, where):
@@ -22,7 +46,7 @@ def joint_rows(q, where):
     if arr.ndim == 1:
         arr = arr.reshape(1, -1)
     if arr.ndim != 2:
-        raise invalid(f"{where}: joint positions must have shape (N, dof), got {arr.shape}")
+        raise invalid(f"joint positions must have shape (N, dof), got {arr.shape}", where)
     if arr.dtype != np.float64 or not arr.dtype.isnative or \
             (arr.shape[1] > 1 and arr.strides[1] != 8) or \
             (len(arr) > 1 and arr.strides[0] < 8 * arr.shape[1]):
@@ -48,59 +72,151 @@ class _BasePoses:
             return
         arr = pose_array(base_pose, where, 2)
         if len(arr) != rows:
-            raise invalid(f"{where}: {len(arr)} base poses for {rows} rows (give one, or one per row)")
+            raise invalid(f"{len(arr)} base poses for {rows} rows (give one, or one per row)", where)
         self.keep, self.address, self.count = arr, arr.ctypes.data, len(arr)
         self.stride = arr.strides[0] if len(arr) > 1 else 0
 
 
-def check_configurations(query, tree, robot, q, threads=1, self_collision=False, base_pose=None,
-                         distance=False, **request):
-    rows = joint_rows(q, "Query.check_configurations")
-    n = len(rows)
-    collided = np.zeros(n, dtype=np.bool_)
-    distances = np.zeros(n, dtype=np.float64) if distance else None
-    if n > 0:
-        bases = _BasePoses(base_pose, n, "Query.check_configurations")
-        req = init_struct(s.BatchRequest, max_threads=threads, self_collision=self_collision,
-                          compute_distance=distance, **request)
-        lib.opx_query_check_configurations(
-            query, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows), bases.address,
-            bases.count, bases.stride, req, collided.ctypes.data,
-            None if distances is None else distances.ctypes.data, n)
-    return (collided, distances) if distance else collided
+def _check_operands(tree, robot, where):
+    if not isinstance(tree, Octree) or not isinstance(robot, LinkSet):
+        raise TypeError(f"{where}: expected an Octree and a LinkSet, got "
+                        f"{type(tree).__name__} and {type(robot).__name__}")
 
 
-def check_motion(query, tree, robot, start, goal, resolution=0.01, self_collision=False,
-                 base_pose=None, **request):
-    a = np.ascontiguousarray(start, dtype=np.float64).reshape(-1)
-    b = np.ascontiguousarray(goal, dtype=np.float64).reshape(-1)
-    if len(a) != len(b):
-        raise invalid(f"Query.check_motion: start has {len(a)} joints, goal {len(b)}")
-    req = init_struct(s.MotionRequest, resolution=resolution, self_collision=self_collision,
-                      **request)
-    out = init_struct(s.MotionResult)
-    base = None if base_pose is None else ctypes.byref(make_pose(base_pose))
-    lib.opx_query_check_motion(query, tree, robot, a.ctypes.data, b.ctypes.data, len(a), base, req,
-                               out)
-    return out
+class BatchQueries:
+    """Query.check_configurations, check_motion and check_motions (mixed
+    into Query)."""
 
+    def _init_batch(self):
+        self._configuration_requests = RequestCache(s.BatchRequest, _CONFIGURATIONS,
+                                                    "Query.check_configurations")
+        self._motion_requests = RequestCache(s.MotionRequest, _MOTION, "Query.check_motion")
+        self._motions_requests = RequestCache(s.MotionRequest, _MOTIONS, "Query.check_motions")
 
-def check_motions(query, tree, robot, starts, goals, resolution=0.01, threads=1,
-                  self_collision=False, base_pose=None, **request):
-    a = joint_rows(starts, "Query.check_motions")
-    b = joint_rows(goals, "Query.check_motions")
-    if a.shape != b.shape:
-        raise invalid(f"Query.check_motions: starts have shape {a.shape}, goals {b.shape}")
-    if a.strides[0] != b.strides[0] and len(a) > 1:  # one stride for both
-        a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
-    n = len(a)
-    collided = np.zeros(n, dtype=np.bool_)
-    fractions = np.zeros(n, dtype=np.float64)
-    if n > 0:
-        bases = _BasePoses(base_pose, n, "Query.check_motions")
-        req = init_struct(s.MotionRequest, resolution=resolution, max_threads=threads,
-                          self_collision=self_collision, **request)
-        lib.opx_query_check_motions(query, tree, robot, a.ctypes.data, b.ctypes.data, n, a.shape[1],
-                                    _row_stride(a), bases.address, bases.count, bases.stride, req,
-                                    collided.ctypes.data, fractions.ctypes.data, n)
-    return collided, fractions
+    @api("Query.check_configurations")
+    def check_configurations(self, tree: Octree, robot: LinkSet, q: ArrayLike, threads: int = 1,
+                             self_collision: bool = False, base_pose: Optional[PoseLike] = None,
+                             distance: bool = False, *,
+                             unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                             occupancy_threshold: float = 0.0, distance_cutoff: float = 0.0,
+                             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                             ) -> Union[np.ndarray, Tuple[np.ndarray, np.ndarray]]:
+        """Checks many joint vectors of a robot made from URDF at once.
+
+        q: an (N, dof) array, every joint in model order.
+        threads: 1 runs on the calling thread, 0 on every core, N on N
+          (opx_batch_request.max_threads); the answers do not depend on it.
+        self_collision: also the robot's own enabled pairs.
+        base_pose: the root link in the map frame, one pose for every row
+          or an (N, 7) array, one per row (None: the map origin).
+        distance: also each configuration's minimum distance (m, padding
+          included, 0 when touching; with self_collision the smaller of
+          that and the self distance); no check then stops at the first
+          contact.  distance_cutoff: obstacles farther than it (m) are not
+          searched, the distance is then the cutoff (0: none).
+        unknown_policy, occupancy_threshold, obstacle_geometry: as
+          Query.collide.
+
+        Returns a numpy bool array of N collided flags; with distance=True
+        a tuple (collided, distances).  Raises InvalidArgumentError naming
+        the row and joint of a bad value, UnsupportedError for a robot not
+        made from URDF, TypeError for swapped operands.
+        """
+        _check_operands(tree, robot, "Query.check_configurations")
+        rows = joint_rows(q, "Query.check_configurations")
+        n = len(rows)
+        collided = np.zeros(n, dtype=np.bool_)
+        distances = np.zeros(n, dtype=np.float64) if distance else None
+        if n > 0:
+            bases = _BasePoses(base_pose, n, "Query.check_configurations")
+            request = self._configuration_requests.lookup(
+                (threads, self_collision, distance, unknown_policy, occupancy_threshold,
+                 distance_cutoff, obstacle_geometry))
+            lib.opx_query_check_configurations(
+                self, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows),
+                bases.address, bases.count, bases.stride, request, collided.ctypes.data,
+                None if distances is None else distances.ctypes.data, n)
+        return (collided, distances) if distance else collided
+
+    @api("Query.check_motion")
+    def check_motion(self, tree: Octree, robot: LinkSet, start: ArrayLike, goal: ArrayLike,
+                     resolution: float = 0.01, self_collision: bool = False,
+                     base_pose: Optional[PoseLike] = None, *,
+                     unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                     occupancy_threshold: float = 0.0, compute_cost: bool = False,
+                     max_cost_boxes: int = 16, unknown_probability: float = 0.5,
+                     region_min: Vector3 = _ZERO3, region_max: Vector3 = _ZERO3,
+                     obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                     ) -> s.MotionResult:
+        """Checks the straight joint-space motion from start to goal (joint
+        vectors in model order).
+
+        resolution: the largest step of any joint between two checked
+          configurations (rad or m, > 0): n = ceil(max |goal - start| /
+          resolution) steps, n + 1 configurations, the ends first.
+        self_collision, base_pose (one pose): as check_configurations.
+        compute_cost: also the cost of the uncertain and unknown space the
+          motion sweeps, every configuration checked (cost_boxes() gives
+          the boxes; max_cost_boxes, unknown_probability, region_min,
+          region_max as Query.collide).
+        Other keywords as Query.collide.
+
+        Returns a MotionResult: collided (bool), first_collision_fraction
+        (i / n of the first colliding configuration, -1: none), steps,
+        configurations_checked, total_cost.  Raises InvalidArgumentError
+        for a bad resolution or joint vectors of different lengths.
+        """
+        _check_operands(tree, robot, "Query.check_motion")
+        a = np.ascontiguousarray(start, dtype=np.float64).reshape(-1)
+        b = np.ascontiguousarray(goal, dtype=np.float64).reshape(-1)
+        if len(a) != len(b):
+            raise invalid(f"start has {len(a)} joints, goal {len(b)}", "Query.check_motion")
+        request = self._motion_requests.lookup(
+            (resolution, self_collision, unknown_policy, occupancy_threshold, compute_cost,
+             max_cost_boxes, unknown_probability, region_min, region_max, obstacle_geometry))
+        out = init_struct(s.MotionResult)
+        base = None if base_pose is None else ctypes.byref(make_pose(base_pose))
+        if compute_cost:
+            self._map_result = None  # the call replaces the query's results
+        lib.opx_query_check_motion(self, tree, robot, a.ctypes.data, b.ctypes.data, len(a), base,
+                                   request, out)
+        if compute_cost:
+            self._map_result = out
+        return out
+
+    @api("Query.check_motions")
+    def check_motions(self, tree: Octree, robot: LinkSet, starts: ArrayLike, goals: ArrayLike,
+                      resolution: float = 0.01, threads: int = 1, self_collision: bool = False,
+                      base_pose: Optional[PoseLike] = None, *,
+                      unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                      occupancy_threshold: float = 0.0,
+                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                      ) -> Tuple[np.ndarray, np.ndarray]:
+        """Checks many motions (a planner's edges): row m of starts to row m
+        of goals, (M, dof) arrays, as check_motion does (no cost here).
+        threads and base_pose (one, or one per row) as
+        check_configurations; other keywords as check_motion.
+
+        Returns (collided, first_fractions): a bool array and each
+        motion's first colliding fraction (-1: none).
+        """
+        _check_operands(tree, robot, "Query.check_motions")
+        a = joint_rows(starts, "Query.check_motions")
+        b = joint_rows(goals, "Query.check_motions")
+        if a.shape != b.shape:
+            raise invalid(f"starts have shape {a.shape}, goals {b.shape}", "Query.check_motions")
+        if a.strides[0] != b.strides[0] and len(a) > 1:  # one stride for both
+            a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
+        n = len(a)
+        collided = np.zeros(n, dtype=np.bool_)
+        fractions = np.zeros(n, dtype=np.float64)
+        if n > 0:
+            bases = _BasePoses(base_pose, n, "Query.check_motions")
+            request = self._motions_requests.lookup(
+                (resolution, threads, self_collision, unknown_policy, occupancy_threshold,
+                 obstacle_geometry))
+            lib.opx_query_check_motions(self, tree, robot, a.ctypes.data, b.ctypes.data, n,
+                                        a.shape[1], _row_stride(a), bases.address, bases.count,
+                                        bases.stride, request, collided.ctypes.data,
+                                        fractions.ctypes.data, n)
+        return collided, fractions

@@ -20,15 +20,14 @@ y down). ::
 """
 import ctypes
 import os
-from typing import NamedTuple, Tuple, Union
+from typing import NamedTuple, Tuple
 
 import numpy as np
 
-from ._errors import OctoproxError, error_for
+from ._errors import OctoproxError
 from ._library import init_struct, lib
 from ._structs import PointCloudInfo
-
-PathLike = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
+from ._types import PathLike
 
 # include/octoprox/io.h
 CLOUD_FORMAT_PCD = 1
@@ -80,7 +79,8 @@ def _read(path: PathLike, function: str, expected_format: int) -> Tuple[np.ndarr
         lib.opx_point_cloud_get_points(handle, points.ctypes.data, len(points), 0, ctypes.byref(count))
         return points, info
     except OctoproxError as error:
-        raise error_for(error.status, f"{function}: {error.message}") from None
+        error.where = function
+        raise
     finally:
         lib.opx_point_cloud_destroy(handle)
 

@@ -1,31 +1,60 @@
-"""The robot: a set of links with shapes (opx_linkset)."""
+"""The robot: a set of links with shapes (opx_linkset).
+
+Shapes are in metres, in the shape frame, which sits at the shape's pose
+in the link frame: a sphere's radius; a box's FULL edge lengths (as URDF
+and FCL); a cylinder's radius and FULL length along z; a capsule's radius
+and the length of its cylindrical part along z (FCL's convention); the
+solid convex hull of vertices; a triangle mesh (a surface: a cell wholly
+inside a closed mesh touches no triangle).  Padding is a safety margin: a
+padded shape is the shape grown by a ball of that radius (exact rounding).
+The library copies vertices, indices and names.
+"""
+from __future__ import annotations
+
 import ctypes
 from types import SimpleNamespace
+from typing import List, Optional, Union
 
 import numpy as np
 
 from . import _structs as s
 from ._arrays import pose_array, pose_strides, triangle_array, vertex_array
-from ._handle import Handle
+from ._enums import ShapeKind
+from ._handle import Handle, api
 from ._library import init_struct, lib, make_pose
+from ._types import ArrayLike, PoseLike, Vector3
 from .robot import RobotModel
 
-SHAPE_SPHERE, SHAPE_BOX, SHAPE_CYLINDER, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_MESH = range(1, 7)
+SHAPE_SPHERE, SHAPE_BOX, SHAPE_CYLINDER, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_MESH = ShapeKind
+LinkRef = Union[int, str]  # a link's index, or its name where the docstring says so
 
 
 def _name(text):
     return text.encode() if isinstance(text, str) else bytes(text)
 
 
+def _array(address, ctype, shape, empty_dtype):
+    """A copy of shape rows at address (library memory), or an empty array."""
+    if not shape[0]:
+        return np.zeros((0, 3), dtype=empty_dtype)
+    return np.ctypeslib.as_array(ctypes.cast(address, ctypes.POINTER(ctype)), shape).copy()
+
+
 class LinkSet(Handle, RobotModel):
     """A robot as links, each with shapes (metres, in the link frame), a
-    padding, an enabled flag and a pose in the map frame; built by hand or
-    from URDF (LinkSet.from_urdf).  Reading methods may run on many threads
-    at once; changing ones need it to themselves.
+    padding, an enabled flag and a pose in the map frame; built by hand
+    (LinkSet(), add_link, add_sphere...) or from URDF (LinkSet.from_urdf).
+
+    Reading methods may run on many threads at once; changing ones need
+    the link set to themselves.  A link set cannot be pickled (build it
+    again in the other process; clone() copies one).
     """
     _destroy = "opx_linkset_destroy"
+    _noun = "link set"
+    _no_pickle = "build the link set again in the other process (clone() copies one here)"
 
-    def __init__(self):
+    @api("LinkSet")
+    def __init__(self) -> None:
         super().__init__(lib.opx_linkset_create)
 
     @classmethod
@@ -34,12 +63,16 @@ class LinkSet(Handle, RobotModel):
         Handle.__init__(links, create)
         return links
 
-    def clone(self):
-        """A deep copy (shapes, names, poses, paddings, enabled flags, joints)."""
+    @api("LinkSet.clone")
+    def clone(self) -> LinkSet:
+        """A deep copy (shapes, names, poses, paddings, enabled flags,
+        pairs, joints)."""
         return LinkSet._from(lambda out: lib.opx_linkset_clone(self, out))
 
-    def add_link(self, name):
-        """Adds a link with an identity pose; returns its index."""
+    @api("LinkSet.add_link")
+    def add_link(self, name: str) -> int:
+        """Adds a link with an identity pose; returns its index.  Names need
+        not be unique (find_link returns the first)."""
         index = ctypes.c_uint32()
         lib.opx_linkset_add_link(self, _name(name), ctypes.byref(index))
         return index.value
@@ -52,97 +85,126 @@ class LinkSet(Handle, RobotModel):
         lib.opx_linkset_add_shape(self, link, shape, ctypes.byref(index))
         return index.value
 
-    def add_sphere(self, link, radius, pose=None):
-        """A sphere centred at pose (in the link frame; default identity)."""
-        return self._add(link, SHAPE_SPHERE, pose, radius=radius)
+    @api("LinkSet.add_sphere")
+    def add_sphere(self, link: int, radius: float, pose: Optional[PoseLike] = None) -> int:
+        """Adds a sphere of radius (m) centred at pose (the shape frame in
+        the link frame; default identity); returns its index in the link.
+        Raises InvalidArgumentError for a bad link or radius."""
+        return self._add(link, ShapeKind.SPHERE, pose, radius=radius)
 
-    def add_box(self, link, size, pose=None):
-        """A box of FULL edge lengths size = (x, y, z)."""
-        return self._add(link, SHAPE_BOX, pose, size=size)
+    @api("LinkSet.add_box")
+    def add_box(self, link: int, size: Vector3, pose: Optional[PoseLike] = None) -> int:
+        """Adds a box of FULL edge lengths size = (x, y, z) in metres,
+        centred at pose; returns its index in the link."""
+        return self._add(link, ShapeKind.BOX, pose, size=size)
 
-    def add_cylinder(self, link, radius, length, pose=None):
-        """A cylinder of FULL length along z."""
-        return self._add(link, SHAPE_CYLINDER, pose, radius=radius, length=length)
+    @api("LinkSet.add_cylinder")
+    def add_cylinder(self, link: int, radius: float, length: float,
+                     pose: Optional[PoseLike] = None) -> int:
+        """Adds a cylinder of radius and FULL length along z (m), centred at
+        pose; returns its index in the link."""
+        return self._add(link, ShapeKind.CYLINDER, pose, radius=radius, length=length)
 
-    def add_capsule(self, link, radius, length, pose=None):
-        """A capsule; length is its cylindrical part along z."""
-        return self._add(link, SHAPE_CAPSULE, pose, radius=radius, length=length)
+    @api("LinkSet.add_capsule")
+    def add_capsule(self, link: int, radius: float, length: float,
+                    pose: Optional[PoseLike] = None) -> int:
+        """Adds a capsule: radius, and length of its cylindrical part along
+        z (the distance between the sphere centres), centred at pose."""
+        return self._add(link, ShapeKind.CAPSULE, pose, radius=radius, length=length)
 
-    def add_convex(self, link, vertices, pose=None):
-        """The solid convex hull of (N, 3) vertices (read by stride)."""
+    @api("LinkSet.add_convex")
+    def add_convex(self, link: int, vertices: ArrayLike, pose: Optional[PoseLike] = None) -> int:
+        """Adds the solid convex hull of (N, 3) vertices (m, shape frame;
+        read by row stride, copied by the library)."""
         v = vertex_array(vertices, "LinkSet.add_convex")
-        return self._add(link, SHAPE_CONVEX, pose, vertices=v.ctypes.data,
+        return self._add(link, ShapeKind.CONVEX, pose, vertices=v.ctypes.data,
                          vertex_count=len(v), vertex_stride=v.strides[0] if len(v) > 1 else 0)
 
-    def add_mesh(self, link, vertices, triangles, pose=None):
-        """A triangle surface: (N, 3) vertices, (M, 3) vertex indices."""
+    @api("LinkSet.add_mesh")
+    def add_mesh(self, link: int, vertices: ArrayLike, triangles: ArrayLike,
+                 pose: Optional[PoseLike] = None) -> int:
+        """Adds a triangle surface: (N, 3) vertices (m, shape frame) and
+        (M, 3) vertex indices; its triangle tree is built here, once."""
         v = vertex_array(vertices, "LinkSet.add_mesh")
         t = triangle_array(triangles, "LinkSet.add_mesh")
-        return self._add(link, SHAPE_MESH, pose, vertices=v.ctypes.data, vertex_count=len(v),
+        return self._add(link, ShapeKind.MESH, pose, vertices=v.ctypes.data, vertex_count=len(v),
                          vertex_stride=v.strides[0] if len(v) > 1 else 0,
                          indices=t.ctypes.data, triangle_count=len(t))
 
-    def __len__(self):
+    def __len__(self) -> int:
         return self.link_count
 
     @property
-    def link_count(self):
+    @api("LinkSet.link_count")
+    def link_count(self) -> int:
+        """The number of links (len() too)."""
         count = ctypes.c_uint32()
         lib.opx_linkset_get_link_count(self, ctypes.byref(count))
         return count.value
 
-    def shape_count(self, link):
+    @api("LinkSet.shape_count")
+    def shape_count(self, link: int) -> int:
+        """The number of shapes of a link."""
         count = ctypes.c_uint32()
         lib.opx_linkset_get_shape_count(self, link, ctypes.byref(count))
         return count.value
 
-    def shape(self, link, shape):
+    @api("LinkSet.shape")
+    def shape(self, link: int, shape: int) -> SimpleNamespace:
         """Shape `shape` of `link` as stored: a namespace with kind
-        (SHAPE_*), pose (7 floats, link frame), radius, length, size, and
+        (ShapeKind), pose (7 floats, link frame), radius, length, size, and
         copies of vertices (N, 3) and triangles (M, 3) for convex hulls and
         meshes (a mesh keeps only the vertices its triangles use)."""
         out = init_struct(s.Shape)
         lib.opx_linkset_get_shape(self, link, shape, out)
-        vertices = np.ctypeslib.as_array(ctypes.cast(out.vertices, ctypes.POINTER(
-            ctypes.c_double)), (out.vertex_count, 3)).copy() if out.vertex_count else \
-            np.zeros((0, 3))
-        triangles = np.ctypeslib.as_array(ctypes.cast(out.indices, ctypes.POINTER(
-            ctypes.c_uint32)), (out.triangle_count, 3)).copy() if out.triangle_count else \
-            np.zeros((0, 3), dtype=np.uint32)
+        vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
+        triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
         return SimpleNamespace(kind=out.kind, pose=tuple(out.pose.position) +
                                tuple(out.pose.orientation), radius=out.radius,
                                length=out.length, size=tuple(out.size), vertices=vertices,
                                triangles=triangles)
 
-    def link_name(self, link):
+    @api("LinkSet.link_name")
+    def link_name(self, link: int) -> str:
+        """The name of a link."""
         name = ctypes.c_char_p()
         lib.opx_linkset_get_link_name(self, link, ctypes.byref(name))
         return name.value.decode("utf-8", "replace")
 
     @property
-    def link_names(self):
+    @api("LinkSet.link_names")
+    def link_names(self) -> List[str]:
+        """Every link's name, in link order."""
         return [self.link_name(i) for i in range(self.link_count)]
 
-    def find_link(self, name):
+    @api("LinkSet.find_link")
+    def find_link(self, name: str) -> int:
         """The index of the first link named name (InvalidArgumentError if none)."""
         index = ctypes.c_uint32()
         lib.opx_linkset_find_link(self, _name(name), ctypes.byref(index))
         return index.value
 
-    def set_padding(self, padding):
-        """The global padding in metres, added to every link's own."""
+    @api("LinkSet.set_padding")
+    def set_padding(self, padding: float) -> None:
+        """The global padding in metres (>= 0), added to every link's own."""
         lib.opx_linkset_set_padding(self, padding)
 
-    def set_link_padding(self, link, padding):
+    @api("LinkSet.set_link_padding")
+    def set_link_padding(self, link: int, padding: float) -> None:
+        """A link's own padding in metres (>= 0), added to the global one."""
         lib.opx_linkset_set_link_padding(self, link, padding)
 
-    def set_link_enabled(self, link, enabled):
+    @api("LinkSet.set_link_enabled")
+    def set_link_enabled(self, link: int, enabled: bool) -> None:
+        """Disabled links take part in no query (links the sensor cannot
+        see, a gripper holding an object).  All links start enabled."""
         lib.opx_linkset_set_link_enabled(self, link, int(bool(enabled)))
 
     def _link_index(self, link):
         return self.find_link(link) if isinstance(link, str) else link
 
-    def set_pair_enabled(self, a, b, enabled):
+    @api("LinkSet.set_pair_enabled")
+    def set_pair_enabled(self, a: LinkRef, b: LinkRef, enabled: bool) -> None:
         """Whether self-collision queries (Query.self_collide,
         Query.self_distance) check links a and b (indices or names; a != b).
         Every pair starts enabled but an SRDF's disabled pairs; links joined
@@ -150,23 +212,26 @@ class LinkSet(Handle, RobotModel):
         lib.opx_linkset_set_pair_enabled(self, self._link_index(a), self._link_index(b),
                                          int(bool(enabled)))
 
-    def pair_enabled(self, a, b):
+    @api("LinkSet.pair_enabled")
+    def pair_enabled(self, a: LinkRef, b: LinkRef) -> bool:
         """True when self-collision queries check links a and b."""
         enabled = ctypes.c_int32()
         lib.opx_linkset_get_pair_enabled(self, self._link_index(a), self._link_index(b),
                                          ctypes.byref(enabled))
         return bool(enabled.value)
 
-    def set_poses(self, poses):
+    @api("LinkSet.set_poses")
+    def set_poses(self, poses: ArrayLike) -> None:
         """Every link's pose in the map frame: an (N, 7) array (x y z qx qy
         qz qw; a float64 array is read in place by row stride) or (N, 3)
-        positions."""
+        positions, N the link count.  On an invalid pose nothing changes."""
         arr = pose_array(poses, "LinkSet.set_poses", 2)
         lib.opx_linkset_set_poses(self, arr.ctypes.data, len(arr), pose_strides(arr)[0])
 
-    def pose(self, link):
-        """A link's pose in the map frame, as a tuple of 7 floats."""
+    @api("LinkSet.pose")
+    def pose(self, link: int) -> tuple:
+        """A link's pose in the map frame, as a tuple of 7 floats (x y z qx
+        qy qz qw)."""
         out = s.Pose()
         lib.opx_linkset_get_pose(self, link, out)
         return tuple(out.position) + tuple(out.orientation)
-

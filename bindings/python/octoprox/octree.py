@@ -1,16 +1,33 @@
-"""The occupancy octree (opx_octree)."""
+"""The occupancy octree (opx_octree): sensor frames in, cells out.
+
+Cells fall in four classes by their occupancy probability p (CellClass):
+OCCUPIED p >= occupied_threshold, UNCERTAIN free_threshold <= p <
+occupied_threshold, FREE p < free_threshold, UNKNOWN never observed.  With
+the default thresholds (both 0.5) no observed cell is uncertain.  All
+coordinates are in the map frame, in metres; the map is a cube of 2^16
+cells per axis centred on the origin.
+"""
+from __future__ import annotations
+
 import ctypes
 import os
+from typing import Dict, Optional
 
+import numpy as np
 
 from . import _structs as s
 from ._arrays import LEAF_DTYPE, depth_view, needed_count, point_view, read_array
-from ._handle import Handle
+from ._enums import CellMask, FileFormat, InsertMode
+from ._handle import Handle, api
 from ._library import init_struct, lib
+from ._types import ArrayLike, FileFormatLike, InsertModeLike, PathLike, PoseLike, Vector3
 
-MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = 1 << 1, 1 << 2, 1 << 3
-MASK_ALL_KNOWN = MASK_FREE | MASK_UNCERTAIN | MASK_OCCUPIED
-FORMAT_AUTO, FORMAT_BT, FORMAT_OT = 0, 1, 2
+MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = CellMask.FREE, CellMask.UNCERTAIN, CellMask.OCCUPIED
+MASK_ALL_KNOWN = CellMask.ALL_KNOWN
+FORMAT_AUTO, FORMAT_BT, FORMAT_OT = FileFormat.AUTO, FileFormat.BT, FileFormat.OT
+# The options a map file does not hold (its resolution it does).
+_PROBABILITIES = ("prob_hit", "prob_miss", "clamp_min", "clamp_max", "occupied_threshold",
+                  "free_threshold")
 
 
 def _path(path):
@@ -27,17 +44,46 @@ def _camera(intrinsics):
     return init_struct(s.CameraIntrinsics, **dict(zip(("fx", "fy", "cx", "cy"), values)))
 
 
-class Octree(Handle):
-    """An occupancy octree in the map frame (OctoMap semantics).
+def _insert_options(sensor_pose, mode, max_range, max_threads, where):
+    fields = dict(mode=InsertMode.parse(mode, where, "mode"), max_range=max_range,
+                  max_threads=max_threads)
+    if sensor_pose is not None:
+        fields["sensor_pose"] = sensor_pose
+    return init_struct(s.InsertOptions, **fields)
 
-    ``Octree(resolution=0.05, free_threshold=0.3, ...)``: any field of
-    opx_octree_options as a keyword.  Methods reading the map may run on
-    many threads at once; the others need the octree to themselves.
+
+def _unpickle(data: bytes, options: Dict[str, float]) -> Octree:
+    return Octree.from_bytes(data, **options)
+
+
+class Octree(Handle):
+    """An occupancy octree in the map frame (OctoMap semantics: log-odds
+    per cell, hit and miss updates, clamping).
+
+    resolution: the edge of a finest cell, 1e-6 to 1e6 m (0.05).
+    prob_hit (0.7), prob_miss (0.4): the updates of a cell holding an
+      endpoint and of one a ray passes (prob_miss < 0.5 < prob_hit).
+    clamp_min (0.1192), clamp_max (0.971): the clamping bounds.
+    occupied_threshold (0.5): occupied when p >= it; free_threshold (0.5):
+      free when p < it (lower it, e.g. 0.3, for an uncertain band).
+    Raises InvalidArgumentError for options out of range.
+
+    Methods reading the map may run on many threads at once; the others
+    need the octree to themselves.  An octree pickles as its .ot bytes and
+    options: the copy has the same leaves and probabilities, but its
+    occupied cells are whole cubes (the point extents insert_points records
+    are not in the file).
     """
     _destroy = "opx_octree_destroy"
+    _noun = "octree"
 
-    def __init__(self, **options):
-        opts = init_struct(s.OctreeOptions, **options)
+    @api("Octree")
+    def __init__(self, resolution: float = 0.05, *, prob_hit: float = 0.7,
+                 prob_miss: float = 0.4, clamp_min: float = 0.1192, clamp_max: float = 0.971,
+                 occupied_threshold: float = 0.5, free_threshold: float = 0.5) -> None:
+        opts = init_struct(s.OctreeOptions, resolution=resolution, prob_hit=prob_hit,
+                           prob_miss=prob_miss, clamp_min=clamp_min, clamp_max=clamp_max,
+                           occupied_threshold=occupied_threshold, free_threshold=free_threshold)
         super().__init__(lambda out: lib.opx_octree_create(ctypes.byref(opts), out))
 
     @classmethod
@@ -47,61 +93,108 @@ class Octree(Handle):
         return tree
 
     @classmethod
-    def load(cls, path, **options):
-        """Loads a .bt or .ot file; its resolution comes from the file."""
-        opts = init_struct(s.OctreeOptions, **options)
+    @api("Octree.load")
+    def load(cls, path: PathLike, *, prob_hit: float = 0.7, prob_miss: float = 0.4,
+             clamp_min: float = 0.1192, clamp_max: float = 0.971,
+             occupied_threshold: float = 0.5, free_threshold: float = 0.5) -> Octree:
+        """Loads a .bt or .ot file (OctoMap 1.x, OcTree); the resolution
+        comes from the file, the keywords (as Octree()'s) set the
+        probabilities and thresholds.  Raises IoError (an OSError) when the
+        file cannot be read, CorruptDataError (a ValueError) when it is
+        malformed or truncated."""
+        opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
+                           clamp_min=clamp_min, clamp_max=clamp_max,
+                           occupied_threshold=occupied_threshold, free_threshold=free_threshold)
         return cls._wrap(lambda out: lib.opx_octree_load_file(_path(path), opts, out))
 
     @classmethod
-    def from_bytes(cls, data, **options):
-        """Loads the bytes of a .bt or .ot file."""
+    @api("Octree.from_bytes")
+    def from_bytes(cls, data: bytes, *, prob_hit: float = 0.7, prob_miss: float = 0.4,
+                   clamp_min: float = 0.1192, clamp_max: float = 0.971,
+                   occupied_threshold: float = 0.5, free_threshold: float = 0.5) -> Octree:
+        """Loads the bytes of a .bt or .ot file (to_bytes() gives them);
+        keywords and errors as load()."""
         data = bytes(data)
-        opts = init_struct(s.OctreeOptions, **options)
+        opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
+                           clamp_min=clamp_min, clamp_max=clamp_max,
+                           occupied_threshold=occupied_threshold, free_threshold=free_threshold)
         return cls._wrap(lambda out: lib.opx_octree_load_memory(data, len(data), opts, out))
 
     @classmethod
-    def from_message(cls, data, binary, resolution, **options):
-        """Loads the data of a ROS octomap_msgs/Octomap message."""
+    @api("Octree.from_message")
+    def from_message(cls, data: bytes, binary: bool, resolution: float, *,
+                     prob_hit: float = 0.7, prob_miss: float = 0.4, clamp_min: float = 0.1192,
+                     clamp_max: float = 0.971, occupied_threshold: float = 0.5,
+                     free_threshold: float = 0.5) -> Octree:
+        """Loads the data field of a ROS octomap_msgs/Octomap message:
+        binary True for a binary map (.bt body), False for a full one (.ot
+        body); resolution the message's, metres.  Only "OcTree" maps (the
+        message's id) are read correctly.  Keywords and errors as load()."""
         data = bytes(data)
-        opts = init_struct(s.OctreeOptions, **options)
+        opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
+                           clamp_min=clamp_min, clamp_max=clamp_max,
+                           occupied_threshold=occupied_threshold, free_threshold=free_threshold)
         return cls._wrap(lambda out: lib.opx_octree_load_message(
             data, len(data), int(bool(binary)), resolution, opts, out))
 
-    def clear(self):
+    def __reduce__(self):
+        options = self.options
+        return (_unpickle, (self.to_bytes(FileFormat.OT),
+                            {name: getattr(options, name) for name in _PROBABILITIES}))
+
+    @api("Octree.clear")
+    def clear(self) -> None:
+        """Removes every cell; the options stay."""
         lib.opx_octree_clear(self)
 
     @property
-    def options(self):
+    @api("Octree.options")
+    def options(self) -> s.OctreeOptions:
+        """The octree's OctreeOptions (a loaded map's resolution included)."""
         out = init_struct(s.OctreeOptions)
         lib.opx_octree_get_options(self, out)
         return out
 
-    def insert_points(self, points, sensor_pose=None, **options):
-        """Inserts one sensor frame and returns its InsertReport.
+    @api("Octree.insert_points")
+    def insert_points(self, points: ArrayLike, sensor_pose: Optional[PoseLike] = None, *,
+                      mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
+                      max_threads: int = 1) -> s.InsertReport:
+        """Inserts one sensor frame; successive frames accumulate.
 
-        points: in the SENSOR frame; see octoprox._arrays for the layouts
-        read in place.  sensor_pose: the sensor in the map frame, (x, y, z)
-        or (x, y, z, qx, qy, qz, qw).  Other keywords: mode
-        (INSERT_RAYCAST or INSERT_ENDPOINTS), max_range (metres),
-        max_threads (1, the default: the caller's thread only; 0: one per
-        hardware thread).
+        points: (N, 3) or wider, in the SENSOR frame, metres; float32 or
+          float64 arrays (strided rows, ROS PointCloud2 buffers as
+          structured arrays) are read in place, anything else copied once.
+        sensor_pose: the sensor in the map frame, (x, y, z) or (x, y, z,
+          qx, qy, qz, qw); None: identity.
+        mode: InsertMode.RAYCAST (or "raycast", the default: free cells
+          along each ray, the endpoint occupied) or ENDPOINTS ("endpoints":
+          endpoint cells only).
+        max_range: points farther from the sensor (m) give no occupied
+          cell; <= 0: no limit.
+        max_threads: 1 keeps the work on the caller's thread; 0 uses one
+          per hardware thread; the map does not depend on it.
+
+        Returns the InsertReport (points used, non-finite, out of range,
+        outside the map; cells hit and missed).  On an invalid argument
+        the map is unchanged.
         """
-        if sensor_pose is not None:
-            options["sensor_pose"] = sensor_pose
-        opts = init_struct(s.InsertOptions, **options)
+        opts = _insert_options(sensor_pose, mode, max_range, max_threads, "Octree.insert_points")
         view = point_view(points, "Octree.insert_points")
         report = init_struct(s.InsertReport)
         lib.opx_octree_insert_points(self, view.address, view.count, view.stride,
                                      view.scalar_type, opts, report)
         return report
 
-    def insert_depth_image(self, depth, intrinsics, depth_scale=1000.0, sensor_pose=None,
-                           **options):
-        """Inserts one depth frame and returns its InsertReport.
+    @api("Octree.insert_depth_image")
+    def insert_depth_image(self, depth: ArrayLike, intrinsics, depth_scale: float = 1000.0,
+                           sensor_pose: Optional[PoseLike] = None, *,
+                           mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
+                           max_threads: int = 1) -> s.InsertReport:
+        """Inserts one depth frame, as insert_points inserts its points.
 
         depth: a 2-D array (rows, columns), read in place when it is uint16
         or float32 with adjacent pixels in a row (C-contiguous, or a view of
-        rows and columns of a bigger array; see octoprox._arrays):
+        rows and columns of a bigger array):
           * uint16: units of 1/depth_scale metres (depth_scale 1000 for
             millimetres, the default; 5000 for TUM RGB-D PNGs); 0 is no
             return;
@@ -111,13 +204,12 @@ class Octree(Handle):
         The pixel in column u, row v with depth z becomes the point
         ((u - cx) * z / fx, (v - cy) * z / fy, z) in the camera's optical
         frame (z forward, x right, y down); sensor_pose places that frame
-        in the map frame, (x, y, z) or (x, y, z, qx, qy, qz, qw).  Other
-        keywords as insert_points: mode, max_range, max_threads.  Pixels
-        without a return are counted in the report's pixels_no_return.
+        in the map frame.  mode, max_range (along the ray), max_threads as
+        insert_points.  Pixels without a return are counted in the
+        report's pixels_no_return.
         """
-        if sensor_pose is not None:
-            options["sensor_pose"] = sensor_pose
-        opts = init_struct(s.InsertOptions, **options)
+        opts = _insert_options(sensor_pose, mode, max_range, max_threads,
+                               "Octree.insert_depth_image")
         camera = _camera(intrinsics)
         view = depth_view(depth, "Octree.insert_depth_image")
         image = init_struct(s.DepthImage, data=view.address, width=view.width,
@@ -127,30 +219,45 @@ class Octree(Handle):
         lib.opx_octree_insert_depth_image(self, image, camera, opts, report)
         return report
 
-    def classify(self, point):
-        """The CellInfo of the cell holding point (x, y, z, map frame)."""
+    @api("Octree.classify")
+    def classify(self, point: Vector3) -> s.CellInfo:
+        """The CellInfo of the cell holding point (x, y, z, map frame, m):
+        cell_class, probability (0.5 when unknown), center, size, depth.  A
+        point outside the map cube raises InvalidArgumentError."""
         xyz = (ctypes.c_double * 3)(*[float(v) for v in point])
         out = init_struct(s.CellInfo)
         lib.opx_octree_classify(self, xyz, out)
         return out
 
     @property
-    def stats(self):
+    @api("Octree.stats")
+    def stats(self) -> s.OctreeStats:
+        """Counts, tight bounds and memory of the map (an OctreeStats; one
+        pass over the leaves)."""
         out = init_struct(s.OctreeStats)
         lib.opx_octree_get_stats(self, out)
         return out
 
-    def leaves(self, class_mask=MASK_OCCUPIED):
-        """The leaves of these classes as a structured array (fields center,
-        size, probability, cell_class, depth), depth-first."""
+    @api("Octree.leaves")
+    def leaves(self, class_mask: int = CellMask.OCCUPIED) -> np.ndarray:
+        """The leaves whose class is in class_mask (CellMask, e.g.
+        CellMask.FREE | CellMask.OCCUPIED) as a structured array with the
+        fields of Leaf (center, size, probability, cell_class, depth),
+        depth-first: the paper's collision map."""
         return read_array(lib.opx_octree_get_leaves, self, class_mask, dtype=LEAF_DTYPE)
 
-    def save(self, path, format=FORMAT_AUTO):
-        """Saves to a .bt or .ot file (format: FORMAT_AUTO, _BT or _OT)."""
-        lib.opx_octree_save_file(self, _path(path), format)
+    @api("Octree.save")
+    def save(self, path: PathLike, format: FileFormatLike = FileFormat.AUTO) -> None:
+        """Saves to a .bt or .ot file (format AUTO: by the extension).
+        Raises IoError when the file cannot be written."""
+        lib.opx_octree_save_file(self, _path(path), FileFormat.parse(format, "Octree.save",
+                                                                      "format"))
 
-    def to_bytes(self, format=FORMAT_BT):
-        """The bytes of a .bt (default) or .ot file."""
+    @api("Octree.to_bytes")
+    def to_bytes(self, format: FileFormatLike = FileFormat.BT) -> bytes:
+        """The bytes of a .bt file (the default: classes only) or, with
+        FileFormat.OT, of a .ot file (every probability)."""
+        format = FileFormat.parse(format, "Octree.to_bytes", "format")
         size = ctypes.c_size_t(needed_count(lib.opx_octree_save_memory, self, format))
         buffer = ctypes.create_string_buffer(size.value)
         lib.opx_octree_save_memory(self, format, buffer, size.value, ctypes.byref(size))

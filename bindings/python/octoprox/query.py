@@ -1,77 +1,166 @@
-"""Query contexts (opx_query): collision, distance and path queries, and
-self-collision."""
+"""Query contexts (opx_query): collision, distance and path queries against
+an octree or bound boxes; self-collision (self_collision.py) and many
+configurations per call (batch.py) are mixed in.
+
+Every query reads the link set at its current poses (map frame), enabled
+links only, paddings included; a shape touching an obstacle (distance
+<= 1e-9 m) collides.  Keywords are the fields of the C request with the C
+defaults; units are metres.
+"""
+from __future__ import annotations
+
+import ctypes
 
 import numpy as np
 
 from . import _structs as s
-from . import batch as _batch
-from ._arrays import (CONTACT_DTYPE, COST_BOX_DTYPE, SELF_CONTACT_DTYPE, box_array, invalid,
-                      pose_array, pose_strides, read_array)
-from ._handle import Handle
-from ._library import init_struct, lib
+from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, box_array, pose_array, pose_strides, read_array
+from ._enums import Engine, ObstacleGeometry, UnknownPolicy
+from ._errors import invalid
+from ._handle import Handle, api, failure
+from ._library import init_struct, lib, unchecked
+from ._requests import RequestCache
+from ._types import ArrayLike, EngineLike, ObstacleGeometryLike, UnknownPolicyLike, Vector3
+from .batch import BatchQueries, _check_operands
 from .linkset import LinkSet
 from .octree import Octree
+from .self_collision import SelfCollisionQueries
 
-ENGINE_DIRECT, ENGINE_AMORTIZED = 1, 2
-UNKNOWN_FREE, UNKNOWN_OCCUPIED = 0, 1
-_ENGINES = {"direct": ENGINE_DIRECT, "amortized": ENGINE_AMORTIZED}
+ENGINE_DIRECT, ENGINE_AMORTIZED = Engine.DIRECT, Engine.AMORTIZED
+UNKNOWN_FREE, UNKNOWN_OCCUPIED = UnknownPolicy.FREE, UnknownPolicy.OCCUPIED
+OBSTACLE_CELLS, OBSTACLE_POINT_EXTENTS = ObstacleGeometry.CELLS, ObstacleGeometry.POINT_EXTENTS
+_ZERO3 = (0.0, 0.0, 0.0)
+ALL_CONTACTS = 0xFFFFFFFF  # max_contacts: keep every contact
+
+# The keywords of each method, in the order its key tuple lists them.
+_COLLIDE = ("unknown_policy", "occupancy_threshold", "max_contacts", "compute_cost",
+            "max_cost_boxes", "unknown_probability", "region_min", "region_max",
+            "compute_penetration", "obstacle_geometry")
+_DISTANCE = ("unknown_policy", "occupancy_threshold", "abs_err", "rel_err", "cutoff", "per_link",
+             "signed_distance", "obstacle_geometry")
+_PATH = ("unknown_policy", "occupancy_threshold", "compute_distance", "compute_cost",
+         "max_cost_boxes", "unknown_probability", "region_min", "region_max", "obstacle_geometry")
+_COLLIDE_BOXES = ("max_contacts", "compute_penetration")
+_DISTANCE_BOXES = ("abs_err", "rel_err", "cutoff", "per_link", "signed_distance")
+
+# Function objects without errcheck and result sizes, read once (the fast path).
+_collide = unchecked("opx_query_collide")
+_distance = unchecked("opx_query_distance")
+_COLLISION_RESULT_SIZE = ctypes.sizeof(s.CollisionResult)
+_DISTANCE_RESULT_SIZE = ctypes.sizeof(s.DistanceResult)
 
 
-def _check_operands(tree, links, where):
-    # The C handles are untyped pointers to ctypes: a swapped argument would
-    # reach the library as the wrong object, so check the Python types here.
-    if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
-        raise TypeError(f"{where}: expected an Octree and a LinkSet, got "
-                        f"{type(tree).__name__} and {type(links).__name__}")
+class Query(Handle, SelfCollisionQueries, BatchQueries):
+    """A query context: its engine, scratch memory and the results of its
+    last queries (contacts, cost boxes, link distances).  Use one per
+    thread; any number of queries may read one Octree and LinkSet at once.
 
-
-def _check_links(links, where):
-    if not isinstance(links, LinkSet):
-        raise TypeError(f"{where}: expected a LinkSet, got {type(links).__name__}")
-
-
-class Query(Handle):
-    """A query context: use one per thread.  ``Query(engine="amortized")``
-    or any field of opx_query_options as a keyword.
-
-    Request fields are keywords of collide/distance/path, e.g.
-    ``query.collide(tree, robot, unknown_policy=UNKNOWN_OCCUPIED,
-    max_contacts=10)``; results are the C result structs.
+    ``Query()`` uses the direct engine; ``Query("amortized")`` (or
+    Engine.AMORTIZED) the amortized one, which gives the same answers and
+    pays off when many queries run against one map.  refine_steps and
+    morton_bits tune the amortized engine (refinement paths per query,
+    default 1; Morton lattice bits per axis, 1 to 21, default 10).
+    Raises ValueError for an unknown engine.
     """
     _destroy = "opx_query_destroy"
+    _noun = "query"
+    _no_pickle = "a query holds one thread's scratch memory; create one in each process"
 
-    def __init__(self, engine=ENGINE_DIRECT, **options):
-        engine = _ENGINES.get(engine, engine)
-        opts = init_struct(s.QueryOptions, engine=engine, **options)
-        super().__init__(lambda out: lib.opx_query_create(opts, out))
-        self._contact_count = self._cost_box_count = self._self_contact_count = 0
+    @api("Query")
+    def __init__(self, engine: EngineLike = Engine.DIRECT, *, refine_steps: int = 1,
+                 morton_bits: int = 10) -> None:
+        options = init_struct(s.QueryOptions, engine=Engine.parse(engine, "Query", "engine"),
+                              refine_steps=refine_steps, morton_bits=morton_bits)
+        super().__init__(lambda out: lib.opx_query_create(options, out))
+        self._map_result = self._self_result = None  # what contacts() and co. read
+        self._collide_requests = RequestCache(s.CollisionRequest, _COLLIDE, "Query.collide")
+        self._distance_requests = RequestCache(s.DistanceRequest, _DISTANCE, "Query.distance")
+        self._path_requests = RequestCache(s.PathRequest, _PATH, "Query.path")
+        self._box_collide_requests = RequestCache(s.CollisionRequest, _COLLIDE_BOXES,
+                                                  "Query.collide_boxes")
+        self._box_distance_requests = RequestCache(s.DistanceRequest, _DISTANCE_BOXES,
+                                                   "Query.distance_boxes")
+        self._init_self_collision()
+        self._init_batch()
 
     @property
-    def stats(self):
+    @api("Query.stats")
+    def stats(self) -> s.QueryStats:
+        """What the context holds (amortized engine; zeros for the direct
+        one): engine, boxes, builds, refine_steps_done, sah_ratio,
+        extract_ms, build_ms (a QueryStats)."""
         out = init_struct(s.QueryStats)
         lib.opx_query_get_stats(self, out)
         return out
 
-    def collide(self, tree, links, **request):
-        """Does the link set collide with the octree?  Read the contacts and
-        cost boxes with contacts() and cost_boxes()."""
-        _check_operands(tree, links, "Query.collide")
-        req = init_struct(s.CollisionRequest, **request)
-        out = init_struct(s.CollisionResult)
-        self._contact_count = self._cost_box_count = 0
-        lib.opx_query_collide(self, tree, links, req, out)
-        self._contact_count, self._cost_box_count = out.contact_count, out.cost_box_count
+    def collide(self, tree: Octree, links: LinkSet, *,
+                unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                occupancy_threshold: float = 0.0, max_contacts: int = 1,
+                compute_cost: bool = False, max_cost_boxes: int = 16,
+                unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
+                region_max: Vector3 = _ZERO3, compute_penetration: bool = False,
+                obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                ) -> s.CollisionResult:
+        """Does the link set collide with the octree?
+
+        unknown_policy: UnknownPolicy.FREE (never-observed space is free,
+          as MoveIt and FCL) or OCCUPIED (a link must lie in observed space).
+        occupancy_threshold: cells with probability >= it are obstacles;
+          0 takes the octree's occupied_threshold.
+        max_contacts: 0 answers yes/no only; 1 stops at the first contact
+          and reports it; N collects up to N (ALL_CONTACTS: every one).
+        compute_cost: also the cost of uncertain and unknown space (paper
+          IV.C): boxes where links overlap cells neither known free nor
+          obstacles, each cell intersected with the link's bounding box, its
+          cost probability x volume (m^3); max_cost_boxes (16) costliest
+          kept, unknown space priced at unknown_probability (0.5) and
+          counted inside region_min..region_max (map frame; the default
+          zeros: the observed cells' bounds).
+        compute_penetration: each contact also gets its depth, normal and
+          point (EPA; exact for polytopes).
+        obstacle_geometry: ObstacleGeometry.CELLS (an occupied cell is its
+          cube) or POINT_EXTENTS (the box of its sensed points, where the
+          map recorded one).
+
+        Returns a CollisionResult: collided (bool), contact_count,
+        truncated, narrow_tests, total_cost, cost_box_count; contacts() and
+        cost_boxes() give the rows.  Raises TypeError for operands of the
+        wrong types or an unknown keyword, ValueError
+        (InvalidArgumentError) for bad values or a closed handle.
+        """
+        key = (unknown_policy, occupancy_threshold, max_contacts, compute_cost, max_cost_boxes,
+               unknown_probability, region_min, region_max, compute_penetration,
+               obstacle_geometry)
+        cache = self._collide_requests
+        request = cache.request if key == cache.key else cache.lookup(key)
+        if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
+            _check_operands(tree, links, "Query.collide")
+        out = s.CollisionResult(_COLLISION_RESULT_SIZE)
+        status = _collide(self._raw, tree._raw, links._raw, request, out)
+        if status:
+            self._map_result = None
+            raise failure(status, "Query.collide", self, tree, links)
+        self._map_result = out
         return out
 
-    def contacts(self):
-        """The contacts of the last collision query, a structured array with
-        the fields of opx_contact (link, shape, cell_class, cell_center, ...)."""
-        return self._rows(lib.opx_query_get_contact, CONTACT_DTYPE, self._contact_count)
+    @api("Query.contacts")
+    def contacts(self) -> np.ndarray:
+        """The contacts of the last collide() or collide_boxes(), a
+        structured array with the fields of Contact: link, shape,
+        cell_class, cell_center (map frame), cell_size, cell_probability,
+        and with compute_penetration depth, normal, position.  Empty after
+        a path query."""
+        count = getattr(self._map_result, "contact_count", 0)
+        return self._rows(lib.opx_query_get_contact, CONTACT_DTYPE, count)
 
-    def cost_boxes(self):
-        """The cost boxes of the last collision or path query, costliest
-        first, a structured array with the fields of opx_cost_box."""
-        return self._rows(lib.opx_query_get_cost_box, COST_BOX_DTYPE, self._cost_box_count)
+    @api("Query.cost_boxes")
+    def cost_boxes(self) -> np.ndarray:
+        """The cost boxes of the last collide(), path() or check_motion()
+        with compute_cost, costliest first: a structured array with the
+        fields of CostBox (link, cell_class, min, max, probability, cost,
+        cell_center, cell_size; map frame, m and m^3)."""
+        count = getattr(self._map_result, "cost_box_count", 0)
+        return self._rows(lib.opx_query_get_cost_box, COST_BOX_DTYPE, count)
 
     def _rows(self, get, dtype, count):
         # Each row is written by the library straight into the array.
@@ -81,139 +170,127 @@ class Query(Handle):
             get(self, i, rows.ctypes.data + i * dtype.itemsize)
         return rows
 
-    def distance(self, tree, links, **request):
-        """The minimum distance between the enabled links and the obstacles;
-        with per_link=True, link_distances() gives each link's."""
-        _check_operands(tree, links, "Query.distance")
-        req = init_struct(s.DistanceRequest, **request)
-        out = init_struct(s.DistanceResult)
-        lib.opx_query_distance(self, tree, links, req, out)
+    def distance(self, tree: Octree, links: LinkSet, *,
+                 unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                 occupancy_threshold: float = 0.0, abs_err: float = 0.0, rel_err: float = 0.0,
+                 cutoff: float = 0.0, per_link: bool = False, signed_distance: bool = False,
+                 obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                 ) -> s.DistanceResult:
+        """The minimum distance between the enabled links (paddings
+        included) and the obstacle cells, with witness points.
+
+        unknown_policy, occupancy_threshold, obstacle_geometry: as collide().
+        abs_err, rel_err: the distance may exceed the true minimum by at
+          most max(abs_err, rel_err * distance); 0 and 0: exact.
+        cutoff: obstacles farther than this (m) are not searched; the
+          result is then found False and distance = cutoff.  0: none.
+        per_link: also each link's minimum (link_distances()).
+        signed_distance: overlapping links get minus their deepest
+          penetration instead of 0.
+
+        Returns a DistanceResult: found, collided (distance <= 1e-9 m),
+        distance (m), link, shape, point_on_link and point_on_cell (map
+        frame), cell_center, cell_size, cell_probability, cell_class.
+        Raises as collide().
+        """
+        key = (unknown_policy, occupancy_threshold, abs_err, rel_err, cutoff, per_link,
+               signed_distance, obstacle_geometry)
+        cache = self._distance_requests
+        request = cache.request if key == cache.key else cache.lookup(key)
+        if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
+            _check_operands(tree, links, "Query.distance")
+        out = s.DistanceResult(_DISTANCE_RESULT_SIZE)
+        status = _distance(self._raw, tree._raw, links._raw, request, out)
+        if status:
+            raise failure(status, "Query.distance", self, tree, links)
         return out
 
-    def link_distances(self):
-        """Each link's minimum distance from the last distance query."""
+    @api("Query.link_distances")
+    def link_distances(self) -> np.ndarray:
+        """Each link's minimum distance (m) from the last distance query
+        with per_link=True, in link order (+inf: disabled, or nothing
+        within the cutoff); empty otherwise."""
         return read_array(lib.opx_query_get_link_distances, self)
 
-    def path(self, tree, links, poses, **request):
-        """Checks a path: poses of shape (waypoints, links, 7) (or 3:
-        positions), map frame; a float64 array is read in place by stride."""
+    @api("Query.path")
+    def path(self, tree: Octree, links: LinkSet, poses: ArrayLike, *,
+             unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+             occupancy_threshold: float = 0.0, compute_distance: bool = False,
+             compute_cost: bool = False, max_cost_boxes: int = 16,
+             unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
+             region_max: Vector3 = _ZERO3,
+             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+             ) -> s.PathResult:
+        """Checks a path of waypoints in order; the link set does not move.
+
+        poses: shape (waypoints, links, 7), x y z qx qy qz qw of every link
+          in the map frame, or (waypoints, links, 3) positions; a float64
+          array is read in place by its strides.
+        compute_distance: the minimum distance along the path.
+        compute_cost: the cost of the uncertain and unknown space swept,
+          each cell counted once (cost_boxes() gives the boxes).
+        Other keywords as collide().  Without distance or cost the check
+        stops at the first colliding waypoint.
+
+        Returns a PathResult: collided, first_colliding_waypoint (-1:
+        none), min_distance, min_distance_waypoint, total_cost,
+        cost_box_count.  Raises as collide(), and InvalidArgumentError for
+        poses of the wrong shape.
+        """
         _check_operands(tree, links, "Query.path")
         arr = pose_array(poses, "Query.path", 3)
         if arr.shape[1] != links.link_count:
-            raise invalid(f"Query.path: poses have {arr.shape[1]} links per waypoint, the "
-                          f"link set has {links.link_count}")
+            raise invalid(f"poses have {arr.shape[1]} links per waypoint, the link set has "
+                          f"{links.link_count}", "Query.path")
+        key = (unknown_policy, occupancy_threshold, compute_distance, compute_cost,
+               max_cost_boxes, unknown_probability, region_min, region_max, obstacle_geometry)
         waypoint_stride, pose_stride = pose_strides(arr)
-        req = init_struct(s.PathRequest, **request)
         out = init_struct(s.PathResult)
-        self._contact_count = self._cost_box_count = 0
+        self._map_result = None
         lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0], pose_stride,
-                           waypoint_stride, req, out)
-        self._cost_box_count = out.cost_box_count
+                           waypoint_stride, self._path_requests.lookup(key), out)
+        self._map_result = out
         return out
 
-    def self_collide(self, links, **request):
-        """Does the link set collide with itself at its current poses?  Every
-        pair of two enabled links with shapes is checked but the disabled
-        pairs (an SRDF's, LinkSet.set_pair_enabled); paddings included.
-        Keywords are fields of opx_self_collision_request: max_contacts (0:
-        yes/no; 1, the default: the first contact; N; 0xFFFFFFFF: all) and
-        compute_penetration.  Returns the SelfCollisionResult (collided,
-        contact_count, truncated, link_pairs, narrow_tests); self_contacts()
-        gives the contacts."""
-        _check_links(links, "Query.self_collide")
-        req = init_struct(s.SelfCollisionRequest, **request)
-        out = init_struct(s.SelfCollisionResult)
-        self._self_contact_count = 0
-        lib.opx_query_self_collide(self, links, req, out)
-        self._self_contact_count = out.contact_count
-        return out
-
-    def self_contacts(self):
-        """The contacts of the last self_collide, a structured array with the
-        fields of opx_self_contact: link_a < link_b, shape_a, shape_b, and
-        with compute_penetration depth, normal (moving link_a by -depth *
-        normal separates the pair) and position (map frame)."""
-        return self._rows(lib.opx_query_get_self_contact, SELF_CONTACT_DTYPE,
-                          self._self_contact_count)
-
-    def self_distance(self, links, **request):
-        """The minimum distance between the link set's checked pairs of links
-        (paddings included), with the two links and shapes and the witness
-        points point_on_a, point_on_b (map frame).  Keywords: cutoff (0:
-        none; beyond it found = 0 and distance = cutoff) and
-        signed_distance (overlap as minus the deepest penetration)."""
-        _check_links(links, "Query.self_distance")
-        req = init_struct(s.SelfDistanceRequest, **request)
-        out = init_struct(s.SelfDistanceResult)
-        lib.opx_query_self_distance(self, links, req, out)
-        return out
-
-    def check_configurations(self, tree, robot, q, threads=1, self_collision=False, base_pose=None,
-                             distance=False, **request):
-        """Checks many joint vectors of a robot made from URDF at once: q is
-        an (N, dof) array, every joint in model order (robot.joint_names).
-        Returns a numpy bool array of N collided flags (the map, and the
-        robot itself with self_collision=True); with distance=True, a tuple
-        (collided, distances), each configuration's minimum distance.
-        base_pose: the root link in the map frame, one for all rows or an
-        (N, 7) array, one per row.  threads: 1 runs on the calling thread,
-        0 on every core; the answers do not depend on it.  The robot does
-        not move; the GIL is released during the call.  Other keywords are
-        fields of opx_batch_request (unknown_policy, occupancy_threshold,
-        distance_cutoff)."""
-        _check_operands(tree, robot, "Query.check_configurations")
-        return _batch.check_configurations(self, tree, robot, q, threads, self_collision, base_pose,
-                                           distance, **request)
-
-    def check_motion(self, tree, robot, start, goal, resolution=0.01, self_collision=False,
-                     base_pose=None, **request):
-        """Checks the straight joint-space motion from start to goal (joint
-        vectors in model order) at configurations no joint step farther
-        apart than resolution (rad or m).  Returns the MotionResult:
-        collided, first_collision_fraction (-1: none), steps,
-        configurations_checked; with compute_cost=True also the swept cost
-        (cost_boxes() then gives its boxes)."""
-        _check_operands(tree, robot, "Query.check_motion")
-        self._contact_count = self._cost_box_count = 0
-        out = _batch.check_motion(self, tree, robot, start, goal, resolution, self_collision,
-                                  base_pose, **request)
-        self._cost_box_count = out.cost_box_count
-        return out
-
-    def check_motions(self, tree, robot, starts, goals, resolution=0.01, threads=1,
-                      self_collision=False, base_pose=None, **request):
-        """Many motions (a planner's edges): row m of starts to row m of
-        goals, (M, dof) arrays.  Returns (collided, first_fractions): a bool
-        array and each motion's first colliding fraction (-1: none)."""
-        _check_operands(tree, robot, "Query.check_motions")
-        return _batch.check_motions(self, tree, robot, starts, goals, resolution, threads,
-                                    self_collision, base_pose, **request)
-
-    def bind_boxes(self, boxes):
-        """Binds a caller's boxes as the map (amortized contexts only): an
-        (N, 6) array of min x y z, max x y z, map frame, metres; copied.
-        collide_boxes() and distance_boxes() then query them."""
+    @api("Query.bind_boxes")
+    def bind_boxes(self, boxes: ArrayLike) -> None:
+        """Binds a caller's boxes as the map (amortized engine only; a
+        direct context raises InvalidArgumentError): an (N, 6) array of
+        min x y z, max x y z, map frame, metres; copied.  collide_boxes()
+        and distance_boxes() then query them, until the next bind_boxes or
+        octree query."""
         arr = box_array(boxes, "Query.bind_boxes")
         stride = arr.strides[0] if len(arr) > 1 else 0
         lib.opx_query_bind_boxes(self, arr.ctypes.data if len(arr) else None, len(arr), stride)
 
-    def collide_boxes(self, links, **request):
-        """collide() against the boxes of bind_boxes(); a contact's
-        cell_center is the box's centre, cell_size its longest edge."""
-        if not isinstance(links, LinkSet):
-            raise TypeError(f"Query.collide_boxes: expected a LinkSet, got {type(links).__name__}")
-        req = init_struct(s.CollisionRequest, **request)
+    @api("Query.collide_boxes")
+    def collide_boxes(self, links: LinkSet, *, max_contacts: int = 1,
+                      compute_penetration: bool = False) -> s.CollisionResult:
+        """collide() against the boxes of bind_boxes(): a contact's
+        cell_center is the box's centre, cell_size its longest edge, its
+        class OCCUPIED.  Keywords as collide()'s (boxes have no unknown or
+        uncertain space, so no cost)."""
+        self._check_links(links, "Query.collide_boxes")
+        key = (max_contacts, compute_penetration)
         out = init_struct(s.CollisionResult)
-        self._contact_count = self._cost_box_count = 0
-        lib.opx_query_collide_boxes(self, links, req, out)
-        self._contact_count = out.contact_count
+        self._map_result = None
+        lib.opx_query_collide_boxes(self, links, self._box_collide_requests.lookup(key), out)
+        self._map_result = out
         return out
 
-    def distance_boxes(self, links, **request):
-        """distance() against the boxes of bind_boxes()."""
-        if not isinstance(links, LinkSet):
-            raise TypeError(f"Query.distance_boxes: expected a LinkSet, got {type(links).__name__}")
-        req = init_struct(s.DistanceRequest, **request)
+    @api("Query.distance_boxes")
+    def distance_boxes(self, links: LinkSet, *, abs_err: float = 0.0, rel_err: float = 0.0,
+                       cutoff: float = 0.0, per_link: bool = False,
+                       signed_distance: bool = False) -> s.DistanceResult:
+        """distance() against the boxes of bind_boxes(); keywords as
+        distance()'s."""
+        self._check_links(links, "Query.distance_boxes")
+        key = (abs_err, rel_err, cutoff, per_link, signed_distance)
         out = init_struct(s.DistanceResult)
-        lib.opx_query_distance_boxes(self, links, req, out)
+        lib.opx_query_distance_boxes(self, links, self._box_distance_requests.lookup(key), out)
         return out
+
+    @staticmethod
+    def _check_links(links, where):
+        if not isinstance(links, LinkSet):
+            raise TypeError(f"{where}: expected a LinkSet, got {type(links).__name__}")

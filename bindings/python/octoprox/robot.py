@@ -1,17 +1,33 @@
 """Link sets from URDF, their joints and forward kinematics (robot.h).
-LinkSet inherits these methods."""
+LinkSet inherits these methods.
+
+Frames: a link's frame is the URDF link frame (LinkSet.pose gives it in
+the map frame); base_pose is the pose of the URDF root link in the map
+frame (None: identity); a joint's origin is the child link frame in the
+parent's at position 0, its axis in the child link frame.  Joint positions
+are radians (revolute, continuous) or metres (prismatic), in model order:
+the URDF file's joint order, fixed joints included.  Every <link> becomes
+a link (same name, file order), every <collision> a shape (box, sphere,
+cylinder, or a mesh read with assimp).
+"""
+from __future__ import annotations
+
 import ctypes
 import os
+from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
 from . import _structs as s
 from ._arrays import read_array
+from ._enums import JointType
+from ._handle import api
 from ._library import init_struct, lib, make_pose
+from ._types import ArrayLike, PathLike, PoseLike
 
 JOINT_FIXED, JOINT_REVOLUTE, JOINT_CONTINUOUS, JOINT_PRISMATIC, JOINT_FLOATING, \
-    JOINT_PLANAR = range(6)
-JOINT_NONE = 0xFFFFFFFF
+    JOINT_PLANAR = JointType
+JOINT_NONE = 0xFFFFFFFF  # no mimic joint, no link
 
 
 def _urdf_options(package_dirs, base_dir, srdf):
@@ -33,53 +49,88 @@ class RobotModel:
     """URDF loading, joints and FK (mixed into LinkSet)."""
 
     @classmethod
-    def from_urdf(cls, path, package_dirs=(), base_dir=None, srdf=None):
+    @api("LinkSet.from_urdf")
+    def from_urdf(cls, path: PathLike, package_dirs: Sequence[PathLike] = (),
+                  base_dir: Optional[PathLike] = None, srdf: Optional[PathLike] = None):
         """A link set from a URDF file: one link per <link> (same names, file
         order), one shape per <collision>, every joint at 0, the root at the
-        map origin.  package_dirs resolve package:// mesh names: folders, or
-        "NAME=DIR" entries; srdf: a file whose disabled pairs self-collision
-        queries skip."""
+        map origin.
+
+        package_dirs: resolve package://NAME/rest mesh names: folders (DIR/
+          NAME/rest, or DIR/rest when DIR ends in NAME), or "NAME=DIR"
+          entries; the first existing file wins.
+        base_dir: the folder of relative mesh paths (None: the URDF's).
+        srdf: a file whose <disable_collisions> pairs self-collision
+          queries skip.
+        Raises IoError (a file or mesh cannot be read, an unknown package),
+        CorruptDataError (malformed XML or URDF, bad geometry),
+        UnsupportedError (collision geometry other than box, sphere,
+        cylinder, mesh).
+        """
         options, _keep = _urdf_options(package_dirs, base_dir, srdf)
         return cls._from(lambda out: lib.opx_linkset_load_urdf_file(os.fsencode(path),
                                                                     options, out))
 
     @classmethod
-    def from_urdf_string(cls, xml, package_dirs=(), base_dir=None, srdf=None):
-        """A link set from URDF XML text (relative meshes: base_dir)."""
+    @api("LinkSet.from_urdf_string")
+    def from_urdf_string(cls, xml: str, package_dirs: Sequence[PathLike] = (),
+                         base_dir: Optional[PathLike] = None, srdf: Optional[PathLike] = None):
+        """A link set from URDF XML text; relative mesh paths are relative
+        to base_dir (None: the current directory).  Otherwise as
+        from_urdf."""
         options, _keep = _urdf_options(package_dirs, base_dir, srdf)
         text = xml.encode() if isinstance(xml, str) else bytes(xml)
         return cls._from(lambda out: lib.opx_linkset_load_urdf_string(text, options, out))
 
     @property
-    def joint_count(self):
+    @api("LinkSet.joint_count")
+    def joint_count(self) -> int:
+        """The number of joints (0 for a set not made from URDF)."""
         count = ctypes.c_uint32()
         lib.opx_linkset_get_joint_count(self, ctypes.byref(count))
         return count.value
 
-    def find_joint(self, name):
+    @api("LinkSet.find_joint")
+    def find_joint(self, name: str) -> int:
+        """The index of the joint named name (InvalidArgumentError if none)."""
         index = ctypes.c_uint32()
         lib.opx_linkset_find_joint(self, name.encode(), ctypes.byref(index))
         return index.value
 
-    def joint_info(self, joint):
-        """The JointInfo of a joint: type, name, links, axis, origin, limits."""
+    @api("LinkSet.joint_info")
+    def joint_info(self, joint: int) -> s.JointInfo:
+        """The JointInfo of a joint: type (JointType), name, parent and
+        child links, axis, origin, limits, mimic."""
         out = init_struct(s.JointInfo)
         lib.opx_linkset_get_joint_info(self, joint, out)
         return out
 
     @property
-    def joint_names(self):
+    @api("LinkSet.joint_names")
+    def joint_names(self) -> List[str]:
+        """Every joint's name, in model order."""
         return [self.joint_info(j).name for j in range(self.joint_count)]
 
-    def set_joint_positions(self, positions, base_pose=None):
-        """FK: all joint positions in model order (radians or metres), the
-        root link at base_pose in the map frame (default identity)."""
+    @api("LinkSet.set_joint_positions")
+    def set_joint_positions(self, positions: ArrayLike, base_pose: Optional[PoseLike] = None
+                            ) -> None:
+        """Forward kinematics: every joint position in model order (radians
+        or metres; values of fixed, floating and planar joints ignored,
+        mimic joints following their masters), the root link at base_pose
+        in the map frame (None: identity); every link pose is set.  Raises
+        InvalidArgumentError for a wrong count or a value that is not
+        finite or beyond 1e6, UnsupportedError for a set not made from
+        URDF; on error nothing changes."""
         values = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1)
         lib.opx_linkset_set_joint_positions(self, values.ctypes.data, len(values),
                                             _base(base_pose))
 
-    def set_named_joint_positions(self, positions, base_pose=None):
-        """FK with only the joints of the {name: position} mapping changed."""
+    @api("LinkSet.set_named_joint_positions")
+    def set_named_joint_positions(self, positions: Dict[str, float],
+                                  base_pose: Optional[PoseLike] = None) -> None:
+        """Forward kinematics with only the joints of the {name: position}
+        mapping changed; the others keep their last values (initially 0).
+        An unknown name is an InvalidArgumentError naming it."""
         names = [name.encode() for name in positions]
         array = (ctypes.c_char_p * max(len(names), 1))(*names)
         values = np.array([float(v) for v in positions.values()], dtype=np.float64)
@@ -87,12 +138,16 @@ class RobotModel:
                                                   _base(base_pose))
 
     @property
-    def joint_positions(self):
-        """The joint positions in model order, as FK uses them."""
+    @api("LinkSet.joint_positions")
+    def joint_positions(self) -> np.ndarray:
+        """The joint positions in model order, as FK uses them (mimic
+        joints: their computed value; fixed, floating, planar: 0)."""
         return read_array(lib.opx_linkset_get_joint_positions, self)
 
-    def disable_never_colliding_pairs(self, samples=10000, seed=1, also_always_colliding=False,
-                                      also_colliding_now=False):
+    @api("LinkSet.disable_never_colliding_pairs")
+    def disable_never_colliding_pairs(self, samples: int = 10000, seed: int = 1,
+                                      also_always_colliding: bool = False,
+                                      also_colliding_now: bool = False) -> s.PairSamplingResult:
         """Disables every pair of links that never collides over `samples`
         random configurations (each moving joint uniform within its
         limits), as MoveIt's setup assistant does; with
@@ -100,7 +155,9 @@ class RobotModel:
         (links meeting at their joint), with also_colliding_now=True those
         colliding at the current poses (the default configuration).  Poses
         and joints do not change.  Returns the PairSamplingResult: how many
-        pairs each rule disabled (now, never, always)."""
+        pairs each rule disabled (now, never, always).  Sampling can miss a
+        rare colliding configuration: more samples, fewer misses.  Raises
+        UnsupportedError for a set not made from URDF."""
         options = init_struct(s.PairSamplingOptions, samples=samples, seed=seed,
                               also_always_colliding=also_always_colliding,
                               also_colliding_now=also_colliding_now)
@@ -109,7 +166,8 @@ class RobotModel:
         return out
 
     @property
-    def disabled_pairs(self):
+    @api("LinkSet.disabled_pairs")
+    def disabled_pairs(self) -> List[tuple]:
         """The SRDF <disable_collisions> pairs as (link, link) indices, as
         the file lists them (self-collision skips them; see pair_enabled)."""
         count, a, b = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_uint32()
