@@ -81,6 +81,9 @@ def api(where: str):
     "Octree.insert_points"; the outermost method called wins) and a closed
     handle among its arguments is reported as closed."""
     def decorate(function):
+        if "." in where:  # a mixin's method: Python's own errors name the class users see
+            function.__qualname__ = where
+
         @functools.wraps(function)
         def method(*args, **keywords):
             try:

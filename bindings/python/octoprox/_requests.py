@@ -1,17 +1,18 @@
 """Request structs built once per distinct set of keyword values.
 
 A query method gathers its keywords into a tuple, the key, in the order of
-``names``.  A Query keeps one cache per request kind: the struct for the
-last key is compared first (the usual loop asks the same thing every
-time), then a small dict, so a repeated query builds no ctypes struct and
-calls no opx_x_init.  Keys holding unhashable values (a list or an array
-as region_min) build a struct every time.
+``names``.  A Query keeps one cache per request kind: the key of the last
+request is compared first (the usual loop asks the same thing every time;
+Query.collide and distance make that comparison inline), then a small
+dict, so a repeated query builds no ctypes struct and calls no
+opx_x_init.  Keys holding a list or an array (region_min) build a struct
+every time.
 """
 import ctypes
 from typing import Any, Dict, Optional, Sequence, Tuple, Type
 
 from ._enums import ObstacleGeometry, UnknownPolicy
-from ._library import init_struct
+from ._library import init_struct, set_field
 
 # Keywords whose values are IntEnum members (any member, value or name).
 ENUMS = {"unknown_policy": UnknownPolicy, "obstacle_geometry": ObstacleGeometry}
@@ -23,10 +24,8 @@ class RequestCache:
     ``request`` are the last ones (read inline by the query methods);
     ``request`` is a ctypes byref of the struct, ready to pass."""
 
-    def __init__(self, struct_type: Type[ctypes.Structure], names: Sequence[str],
-                 where: str, fixed: Optional[Dict[str, Any]] = None):
+    def __init__(self, struct_type: Type[ctypes.Structure], names: Sequence[str], where: str):
         self._type, self._names, self._where = struct_type, tuple(names), where
-        self._fixed = fixed or {}
         self._by_key: Dict[Tuple, Any] = {}
         self.key: Optional[Tuple] = None
         self.request = None
@@ -34,8 +33,10 @@ class RequestCache:
     def lookup(self, key: Tuple):
         """The request for ``key``, built when new; it becomes the last."""
         try:
+            if key == self.key:
+                return self.request
             request = self._by_key.get(key)
-        except TypeError:  # an unhashable value: built, not kept
+        except (ValueError, TypeError):  # an array or a list: built, not kept
             return ctypes.byref(self.build(key))
         if request is None:
             if len(self._by_key) >= _MAX_KEYS:
@@ -48,12 +49,16 @@ class RequestCache:
         """A new struct with the library's defaults and the key's values;
         a bad value raises TypeError or ValueError naming the method and
         the keyword."""
-        fields = dict(self._fixed)
+        request = init_struct(self._type)
         for name, value in zip(self._names, key):
             enum = ENUMS.get(name)
-            fields[name] = enum.parse(value, self._where, name) if enum else value
-        try:
-            return init_struct(self._type, **fields)
-        except (TypeError, ValueError) as error:
-            raise type(error)(f"{self._where}: {error}") from None
+            if enum is not None:
+                value = enum.parse(value, self._where, name)
+            try:
+                set_field(request, name, value)
+            except (TypeError, ValueError) as error:
+                kind = TypeError if isinstance(error, TypeError) else ValueError
+                text = str(error) if name in str(error) else f"{name}: {error}"
+                raise kind(f"{self._where}: {text}") from None
+        return request
 

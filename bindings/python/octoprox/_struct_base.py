@@ -6,6 +6,7 @@ from ctypes import c_double
 from typing import Any, Callable, Dict
 
 D3 = c_double * 3
+D3.__doc__ = "Three doubles: a point or a vector (x, y, z), metres unless a field says otherwise."
 
 
 class Struct(ctypes.Structure):

@@ -162,6 +162,7 @@ class JointInfo(Struct):
         return (self._name or b"").decode("utf-8", "replace")
 
     def to_dict(self):
+        """Every field by name, ``name`` as str."""
         out = super().to_dict()
         out["name"] = self.name
         del out["_name"]

@@ -132,7 +132,11 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
                unknown_probability, region_min, region_max, compute_penetration,
                obstacle_geometry)
         cache = self._collide_requests
-        request = cache.request if key == cache.key else cache.lookup(key)
+        try:
+            same = key == cache.key
+        except ValueError:  # a numpy array among the values
+            same = False
+        request = cache.request if same else cache.lookup(key)
         if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
             _check_operands(tree, links, "Query.collide")
         out = s.CollisionResult(_COLLISION_RESULT_SIZE)
@@ -196,7 +200,11 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         key = (unknown_policy, occupancy_threshold, abs_err, rel_err, cutoff, per_link,
                signed_distance, obstacle_geometry)
         cache = self._distance_requests
-        request = cache.request if key == cache.key else cache.lookup(key)
+        try:
+            same = key == cache.key
+        except ValueError:  # a numpy array among the values
+            same = False
+        request = cache.request if same else cache.lookup(key)
         if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
             _check_operands(tree, links, "Query.distance")
         out = s.DistanceResult(_DISTANCE_RESULT_SIZE)
