@@ -123,7 +123,8 @@ static void struct_layouts_are_fixed(void **state) {
     assert_int_equal(offsetof(opx_camera_intrinsics, fx), 8);
     assert_int_equal(sizeof(opx_cell_info), 56);
     assert_int_equal(offsetof(opx_cell_info, depth), 48);
-    assert_int_equal(sizeof(opx_octree_stats), 152);
+    assert_int_equal(sizeof(opx_octree_stats), 160);
+    assert_int_equal(offsetof(opx_octree_stats, leaves_with_extent), 152);
     assert_int_equal(sizeof(opx_leaf), 48);
     assert_int_equal(sizeof(opx_urdf_options), 40);
     assert_int_equal(offsetof(opx_urdf_options, package_dirs), 8);

@@ -164,7 +164,9 @@ static void batch_struct_layouts_are_fixed(void **state) {
     assert_int_equal(sizeof(opx_batch_request), 40);
     assert_int_equal(offsetof(opx_batch_request, distance_cutoff), 24);
     assert_int_equal(offsetof(opx_batch_request, max_threads), 32);
-    assert_int_equal(sizeof(opx_motion_request), 96);
+    assert_int_equal(offsetof(opx_batch_request, obstacle_geometry), 36);
+    assert_int_equal(sizeof(opx_motion_request), 104);
+    assert_int_equal(offsetof(opx_motion_request, obstacle_geometry), 96);
     assert_int_equal(offsetof(opx_motion_request, resolution), 16);
     assert_int_equal(offsetof(opx_motion_request, max_threads), 36);
     assert_int_equal(offsetof(opx_motion_request, region_max), 72);
