@@ -40,6 +40,7 @@ class PointView:
     type; ``owner`` keeps the memory alive for the call."""
 
     def __init__(self, address, count, stride, scalar_type, owner):
+        """The view's fields as given."""
         self.address, self.count, self.stride = address, count, stride
         self.scalar_type, self.owner = scalar_type, owner
 
@@ -99,6 +100,7 @@ class DepthView:
     stride (bytes), scalar type; ``owner`` keeps the memory alive."""
 
     def __init__(self, arr, scalar_type):
+        """The view of a 2-D array the library can read as it is."""
         self.height, self.width = arr.shape
         self.address, self.scalar_type, self.owner = arr.ctypes.data, scalar_type, arr
         packed = self.width * arr.itemsize

@@ -27,6 +27,7 @@ class OctoproxError(Exception):
     method, or None)."""
 
     def __init__(self, status: int, message: str, where: Optional[str] = None) -> None:
+        """An error of this status, message and (optional) Python method."""
         # Only the message goes to the base classes: OSError would take two
         # arguments as errno and strerror.
         super().__init__(message)

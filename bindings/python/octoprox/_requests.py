@@ -25,6 +25,8 @@ class RequestCache:
     ``request`` is a ctypes byref of the struct, ready to pass."""
 
     def __init__(self, struct_type: Type[ctypes.Structure], names: Sequence[str], where: str):
+        """An empty cache of ``struct_type`` requests whose keys hold the
+        fields ``names``, for the method ``where``."""
         self._type, self._names, self._where = struct_type, tuple(names), where
         self._by_key: Dict[Tuple, Any] = {}
         self.key: Optional[Tuple] = None

@@ -26,6 +26,7 @@ from ._errors import invalid
 from ._handle import api
 from ._library import init_struct, lib, make_pose
 from ._requests import RequestCache
+from ._structs import MotionResult
 from ._types import ArrayLike, ObstacleGeometryLike, PoseLike, UnknownPolicyLike, Vector3
 from .linkset import LinkSet
 from .octree import Octree
@@ -147,7 +148,7 @@ class BatchQueries:
                      max_cost_boxes: int = 16, unknown_probability: float = 0.5,
                      region_min: Vector3 = _ZERO3, region_max: Vector3 = _ZERO3,
                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-                     ) -> s.MotionResult:
+                     ) -> MotionResult:
         """Checks the straight joint-space motion from start to goal (joint
         vectors in model order).
 

@@ -55,6 +55,7 @@ class LinkSet(Handle, RobotModel):
 
     @api("LinkSet")
     def __init__(self) -> None:
+        """An empty link set: add links with add_link, shapes with add_sphere..."""
         super().__init__(lib.opx_linkset_create)
 
     @classmethod

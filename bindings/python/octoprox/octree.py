@@ -20,6 +20,7 @@ from ._arrays import LEAF_DTYPE, depth_view, needed_count, point_view, read_arra
 from ._enums import CellMask, FileFormat, InsertMode
 from ._handle import Handle, api
 from ._library import init_struct, lib
+from ._structs import CellInfo, InsertReport, OctreeOptions, OctreeStats
 from ._types import ArrayLike, FileFormatLike, InsertModeLike, PathLike, PoseLike, Vector3
 
 MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = CellMask.FREE, CellMask.UNCERTAIN, CellMask.OCCUPIED
@@ -81,6 +82,7 @@ class Octree(Handle):
     def __init__(self, resolution: float = 0.05, *, prob_hit: float = 0.7,
                  prob_miss: float = 0.4, clamp_min: float = 0.1192, clamp_max: float = 0.971,
                  occupied_threshold: float = 0.5, free_threshold: float = 0.5) -> None:
+        """An empty octree with these options (see the class)."""
         opts = init_struct(s.OctreeOptions, resolution=resolution, prob_hit=prob_hit,
                            prob_miss=prob_miss, clamp_min=clamp_min, clamp_max=clamp_max,
                            occupied_threshold=occupied_threshold, free_threshold=free_threshold)
@@ -149,7 +151,7 @@ class Octree(Handle):
 
     @property
     @api("Octree.options")
-    def options(self) -> s.OctreeOptions:
+    def options(self) -> OctreeOptions:
         """The octree's OctreeOptions (a loaded map's resolution included)."""
         out = init_struct(s.OctreeOptions)
         lib.opx_octree_get_options(self, out)
@@ -158,7 +160,7 @@ class Octree(Handle):
     @api("Octree.insert_points")
     def insert_points(self, points: ArrayLike, sensor_pose: Optional[PoseLike] = None, *,
                       mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
-                      max_threads: int = 1) -> s.InsertReport:
+                      max_threads: int = 1) -> InsertReport:
         """Inserts one sensor frame; successive frames accumulate.
 
         points: (N, 3) or wider, in the SENSOR frame, metres; float32 or
@@ -189,7 +191,7 @@ class Octree(Handle):
     def insert_depth_image(self, depth: ArrayLike, intrinsics, depth_scale: float = 1000.0,
                            sensor_pose: Optional[PoseLike] = None, *,
                            mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
-                           max_threads: int = 1) -> s.InsertReport:
+                           max_threads: int = 1) -> InsertReport:
         """Inserts one depth frame, as insert_points inserts its points.
 
         depth: a 2-D array (rows, columns), read in place when it is uint16
@@ -220,7 +222,7 @@ class Octree(Handle):
         return report
 
     @api("Octree.classify")
-    def classify(self, point: Vector3) -> s.CellInfo:
+    def classify(self, point: Vector3) -> CellInfo:
         """The CellInfo of the cell holding point (x, y, z, map frame, m):
         cell_class, probability (0.5 when unknown), center, size, depth.  A
         point outside the map cube raises InvalidArgumentError."""
@@ -231,7 +233,7 @@ class Octree(Handle):
 
     @property
     @api("Octree.stats")
-    def stats(self) -> s.OctreeStats:
+    def stats(self) -> OctreeStats:
         """Counts, tight bounds and memory of the map (an OctreeStats; one
         pass over the leaves)."""
         out = init_struct(s.OctreeStats)

@@ -20,6 +20,7 @@ from ._errors import invalid
 from ._handle import Handle, api, failure
 from ._library import init_struct, lib, unchecked
 from ._requests import RequestCache
+from ._structs import CollisionResult, DistanceResult, PathResult, QueryStats
 from ._types import ArrayLike, EngineLike, ObstacleGeometryLike, UnknownPolicyLike, Vector3
 from .batch import BatchQueries, _check_operands
 from .linkset import LinkSet
@@ -69,6 +70,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
     @api("Query")
     def __init__(self, engine: EngineLike = Engine.DIRECT, *, refine_steps: int = 1,
                  morton_bits: int = 10) -> None:
+        """A new query context with this engine (see the class)."""
         options = init_struct(s.QueryOptions, engine=Engine.parse(engine, "Query", "engine"),
                               refine_steps=refine_steps, morton_bits=morton_bits)
         super().__init__(lambda out: lib.opx_query_create(options, out))
@@ -85,7 +87,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
 
     @property
     @api("Query.stats")
-    def stats(self) -> s.QueryStats:
+    def stats(self) -> QueryStats:
         """What the context holds (amortized engine; zeros for the direct
         one): engine, boxes, builds, refine_steps_done, sah_ratio,
         extract_ms, build_ms (a QueryStats)."""
@@ -100,7 +102,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
                 unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
                 region_max: Vector3 = _ZERO3, compute_penetration: bool = False,
                 obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-                ) -> s.CollisionResult:
+                ) -> CollisionResult:
         """Does the link set collide with the octree?
 
         unknown_policy: UnknownPolicy.FREE (never-observed space is free,
@@ -179,7 +181,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
                  occupancy_threshold: float = 0.0, abs_err: float = 0.0, rel_err: float = 0.0,
                  cutoff: float = 0.0, per_link: bool = False, signed_distance: bool = False,
                  obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-                 ) -> s.DistanceResult:
+                 ) -> DistanceResult:
         """The minimum distance between the enabled links (paddings
         included) and the obstacle cells, with witness points.
 
@@ -228,7 +230,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
              unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
              region_max: Vector3 = _ZERO3,
              obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-             ) -> s.PathResult:
+             ) -> PathResult:
         """Checks a path of waypoints in order; the link set does not move.
 
         poses: shape (waypoints, links, 7), x y z qx qy qz qw of every link
@@ -273,7 +275,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
 
     @api("Query.collide_boxes")
     def collide_boxes(self, links: LinkSet, *, max_contacts: int = 1,
-                      compute_penetration: bool = False) -> s.CollisionResult:
+                      compute_penetration: bool = False) -> CollisionResult:
         """collide() against the boxes of bind_boxes(): a contact's
         cell_center is the box's centre, cell_size its longest edge, its
         class OCCUPIED.  Keywords as collide()'s (boxes have no unknown or
@@ -289,7 +291,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
     @api("Query.distance_boxes")
     def distance_boxes(self, links: LinkSet, *, abs_err: float = 0.0, rel_err: float = 0.0,
                        cutoff: float = 0.0, per_link: bool = False,
-                       signed_distance: bool = False) -> s.DistanceResult:
+                       signed_distance: bool = False) -> DistanceResult:
         """distance() against the boxes of bind_boxes(); keywords as
         distance()'s."""
         self._check_links(links, "Query.distance_boxes")

@@ -23,6 +23,7 @@ from ._arrays import read_array
 from ._enums import JointType
 from ._handle import api
 from ._library import init_struct, lib, make_pose
+from ._structs import JointInfo, PairSamplingResult
 from ._types import ArrayLike, PathLike, PoseLike
 
 JOINT_FIXED, JOINT_REVOLUTE, JOINT_CONTINUOUS, JOINT_PRISMATIC, JOINT_FLOATING, \
@@ -98,7 +99,7 @@ class RobotModel:
         return index.value
 
     @api("LinkSet.joint_info")
-    def joint_info(self, joint: int) -> s.JointInfo:
+    def joint_info(self, joint: int) -> JointInfo:
         """The JointInfo of a joint: type (JointType), name, parent and
         child links, axis, origin, limits, mimic."""
         out = init_struct(s.JointInfo)
@@ -147,7 +148,7 @@ class RobotModel:
     @api("LinkSet.disable_never_colliding_pairs")
     def disable_never_colliding_pairs(self, samples: int = 10000, seed: int = 1,
                                       also_always_colliding: bool = False,
-                                      also_colliding_now: bool = False) -> s.PairSamplingResult:
+                                      also_colliding_now: bool = False) -> PairSamplingResult:
         """Disables every pair of links that never collides over `samples`
         random configurations (each moving joint uniform within its
         limits), as MoveIt's setup assistant does; with

@@ -18,6 +18,7 @@ from ._arrays import SELF_CONTACT_DTYPE
 from ._handle import api
 from ._library import init_struct, lib
 from ._requests import RequestCache
+from ._structs import SelfCollisionResult, SelfDistanceResult
 from .linkset import LinkSet
 
 
@@ -32,7 +33,7 @@ class SelfCollisionQueries:
 
     @api("Query.self_collide")
     def self_collide(self, links: LinkSet, *, max_contacts: int = 1,
-                     compute_penetration: bool = False) -> s.SelfCollisionResult:
+                     compute_penetration: bool = False) -> SelfCollisionResult:
         """Does the link set collide with itself at its current poses?
 
         max_contacts: 0 answers yes/no; 1 (the default) stops at the first
@@ -65,7 +66,7 @@ class SelfCollisionQueries:
 
     @api("Query.self_distance")
     def self_distance(self, links: LinkSet, *, signed_distance: bool = False,
-                      cutoff: float = 0.0) -> s.SelfDistanceResult:
+                      cutoff: float = 0.0) -> SelfDistanceResult:
         """The minimum distance between the link set's checked pairs of
         links (paddings included).
 

@@ -37,9 +37,10 @@ def defined_in(module):
 
 
 def own_members(cls):
-    """The public methods and properties a class itself defines."""
+    """The public methods and properties a class itself defines, and its
+    own __init__ (help() would show an inherited docstring)."""
     for name, value in vars(cls).items():
-        if name.startswith("_"):
+        if name.startswith("_") and name != "__init__":
             continue
         if isinstance(value, (staticmethod, classmethod)):
             value = value.__func__
