@@ -10,6 +10,6 @@ fn main() -> Result<(), octoprox::Error> {
     robot.add_shape(hand, &Shape::sphere(0.08))?;
     robot.set_poses(&[pose_at(0.95, 0.0, 1.2)])?; // map frame
     let hit = Query::new(&Default::default())?.collide(&map, &robot, &CollisionRequest::default())?;
-    println!("collided: {}", hit.collided == 1);
+    println!("collided: {}", hit.collided);
     Ok(())
 }

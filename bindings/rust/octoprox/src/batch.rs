@@ -4,6 +4,30 @@
 //! [`LinkSet::set_joint_positions`] takes them), packed one after the other
 //! in one slice.  The robot is only read (`&LinkSet`): forward kinematics
 //! runs on the query's own copies, so other threads may use the same robot.
+//!
+//! ```
+//! use octoprox::{BasePoses, BatchRequest, InsertMode, InsertOptions, LinkSet, Octree,
+//!                OctreeOptions, Query, QueryOptions, UrdfOptions};
+//!
+//! // A 1 m arm turning about z at the origin; its tip a sphere at x = 1.
+//! let urdf = r#"<robot name="arm">
+//!   <link name="base"/>
+//!   <link name="arm"><collision><origin xyz="1 0 0"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+//!   <joint name="turn" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/></joint>
+//! </robot>"#;
+//! let robot = LinkSet::from_urdf_string(urdf, &UrdfOptions::default())?;
+//! let mut map = Octree::new(&OctreeOptions { resolution: 0.1, ..Default::default() })?;
+//! let endpoints = InsertOptions { mode: InsertMode::Endpoints, ..Default::default() };
+//! map.insert_points(&[[0.05f64, 1.05, 0.05]], &endpoints)?; // an obstacle at +y
+//! let rows = [0.0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI]; // one joint per row
+//! let request = BatchRequest { compute_distance: true, ..Default::default() };
+//! let mut query = Query::new(&QueryOptions::default())?;
+//! let answers = query.check_configurations(&map, &robot, &rows, BasePoses::Origin, &request)?;
+//! assert_eq!(answers.collided, [false, true, false]);
+//! assert_eq!(answers.distances[1], 0.0);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
+use crate::batch_types::fraction;
 use crate::error::{check, Error, Result};
 use crate::{sys, BatchRequest, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query};
 use std::ptr;
@@ -15,7 +39,7 @@ pub enum BasePoses<'a> {
     Origin,
     /// The same pose for every row.
     Shared(Pose),
-    /// One pose per row.
+    /// One pose per row (as many as rows, else an invalid argument).
     PerRow(&'a [Pose]),
 }
 
@@ -42,18 +66,18 @@ pub struct ConfigurationAnswers {
 /// The answers of [`Query::check_motions`], one per motion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MotionAnswers {
+    /// Some checked configuration of the motion collides.
     pub collided: Vec<bool>,
     /// Where the first colliding configuration lies along the motion, in
-    /// [0, 1]; -1 when none collides.
-    pub first_fractions: Vec<f64>,
+    /// [0, 1]; `None` when none collides.
+    pub first_fractions: Vec<Option<f64>>,
 }
 
 /// Rows of `values` for the robot: the row count, each row `joints` values.
 fn row_count(robot: &LinkSet, values: &[f64], what: &str) -> Result<(usize, usize)> {
     let joints = robot.joint_count()? as usize;
     if (joints == 0 && !values.is_empty()) || (joints > 0 && values.len() % joints != 0) {
-        return Err(Error::new(
-            sys::OPX_ERROR_INVALID_ARGUMENT,
+        return Err(Error::invalid(
             format!("{what}: {} values are not rows of the robot's {joints} joints", values.len()),
         ));
     }
@@ -66,18 +90,21 @@ fn flags(bytes: Vec<u8>) -> Vec<bool> {
 
 impl Query {
     /// Checks many configurations of `robot` against `tree` in one call:
-    /// `rows` holds N joint vectors (N x joint count values, model order).
-    /// `request.max_threads` workers split them (1, the default: the
-    /// calling thread; 0: every core); the answers do not depend on it.
-    /// `request.self_collision = 1` also checks the robot against itself,
-    /// `request.compute_distance = 1` gives each configuration's minimum
-    /// distance.  No rows: no answers.
+    /// `rows` holds N joint vectors (N x joint count values, model order;
+    /// else an invalid argument), the root link placed by `bases` (map
+    /// frame).  `request.max_threads` workers split them (1, the default:
+    /// the calling thread; 0: every core); the answers do not depend on it.
+    /// `request.self_collision` also checks the robot against itself,
+    /// `request.compute_distance` gives each configuration's minimum
+    /// distance.  No rows: no answers.  A non-finite joint value is an
+    /// invalid argument naming its row and joint.
     pub fn check_configurations(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64],
                                 bases: BasePoses<'_>, request: &BatchRequest)
         -> Result<ConfigurationAnswers> {
         let (count, joints) = row_count(robot, rows, "Query::check_configurations: rows")?;
         let mut collided = vec![0u8; count];
-        let mut distances = vec![0.0; if request.compute_distance != 0 { count } else { 0 }];
+        let mut distances = vec![0.0; if request.compute_distance { count } else { 0 }];
+        let request = request.to_c();
         if count > 0 {
             let (base, base_count) = bases.raw();
             let out_distances = if distances.is_empty() { ptr::null_mut() } else { distances.as_mut_ptr() };
@@ -87,7 +114,7 @@ impl Query {
             check(unsafe {
                 sys::opx_query_check_configurations(
                     self.as_raw_mut(), tree.as_raw(), robot.as_raw(), rows.as_ptr(), count, joints, 0,
-                    base, base_count, 0, request, collided.as_mut_ptr(), out_distances, count)
+                    base, base_count, 0, &request, collided.as_mut_ptr(), out_distances, count)
             })?;
         }
         Ok(ConfigurationAnswers { collided: flags(collided), distances })
@@ -96,40 +123,41 @@ impl Query {
     /// Checks the straight joint-space motion from `start` to `goal` (joint
     /// vectors in model order) at configurations no joint step farther apart
     /// than `request.resolution` (rad or m); the root link at `base` (map
-    /// frame; `None`: the origin).  With `request.compute_cost = 1` the
-    /// swept cost's boxes are then read with [`Query::cost_boxes`].
+    /// frame; `None`: the origin).  With `request.compute_cost` the swept
+    /// cost's boxes are then read with [`Query::cost_boxes`].
     pub fn check_motion(&mut self, tree: &Octree, robot: &LinkSet, start: &[f64], goal: &[f64],
                         base: Option<&Pose>, request: &MotionRequest) -> Result<MotionResult> {
         if start.len() != goal.len() {
-            return Err(Error::new(
-                sys::OPX_ERROR_INVALID_ARGUMENT,
+            return Err(Error::invalid(
                 format!("Query::check_motion: start has {} joints, goal {}", start.len(), goal.len()),
             ));
         }
-        let mut out = MotionResult::default();
+        let request = request.to_c();
+        let mut out = sys::opx_motion_result::default();
         self.hold_cost_boxes(0);
         let base = base.map_or(ptr::null(), |b| b as *const Pose);
         // SAFETY: start and goal hold start.len() doubles each; live handles.
         check(unsafe {
             sys::opx_query_check_motion(self.as_raw_mut(), tree.as_raw(), robot.as_raw(), start.as_ptr(),
-                                        goal.as_ptr(), start.len(), base, request, &mut out)
+                                        goal.as_ptr(), start.len(), base, &request, &mut out)
         })?;
         self.hold_cost_boxes(out.cost_box_count as usize);
-        Ok(out)
+        Ok(MotionResult::from_c(&out))
     }
 
     /// Checks many motions (a planner's edges): row m of `starts` to row m
-    /// of `goals`, split over `request.max_threads` workers, as
-    /// [`Query::check_motion`] checks one (without cost).
+    /// of `goals` (equal lengths, rows of the robot's joints), split over
+    /// `request.max_threads` workers, as [`Query::check_motion`] checks one
+    /// (without cost), the root link placed by `bases` (map frame).
     pub fn check_motions(&mut self, tree: &Octree, robot: &LinkSet, starts: &[f64], goals: &[f64],
                          bases: BasePoses<'_>, request: &MotionRequest) -> Result<MotionAnswers> {
         let (count, joints) = row_count(robot, starts, "Query::check_motions: starts")?;
         if goals.len() != starts.len() {
-            return Err(Error::new(
-                sys::OPX_ERROR_INVALID_ARGUMENT,
+            return Err(Error::invalid(
                 format!("Query::check_motions: {} start values but {} goal values", starts.len(), goals.len()),
             ));
         }
+        let request = request.to_c();
         let mut collided = vec![0u8; count];
         let mut first_fractions = vec![0.0; count];
         if count > 0 {
@@ -139,10 +167,11 @@ impl Query {
             check(unsafe {
                 sys::opx_query_check_motions(
                     self.as_raw_mut(), tree.as_raw(), robot.as_raw(), starts.as_ptr(), goals.as_ptr(), count,
-                    joints, 0, base, base_count, 0, request, collided.as_mut_ptr(),
+                    joints, 0, base, base_count, 0, &request, collided.as_mut_ptr(),
                     first_fractions.as_mut_ptr(), count)
             })?;
         }
+        let first_fractions = first_fractions.into_iter().map(fraction).collect();
         Ok(MotionAnswers { collided: flags(collided), first_fractions })
     }
 }

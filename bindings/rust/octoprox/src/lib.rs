@@ -2,81 +2,97 @@
 //! distance queries between robot links and occupancy octrees built from
 //! point-cloud sensor frames.
 //!
-//! * [`Octree`]: the map (insert sensor frames: points or a
+//! * [`Octree`]: the map (insert sensor frames: [`Points`] or a
 //!   [`DepthImage`]; classify, leaves, files).
 //! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses), built by
 //!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
-//!   [`Query::path`]; the robot against itself: [`Query::self_collide`],
-//!   [`Query::self_distance`] over the pairs [`LinkSet::set_pair_enabled`]
-//!   (and an SRDF) leave enabled.
+//!   [`Query::path`]; many configurations and motions per call
+//!   ([`Query::check_configurations`], [`Query::check_motions`]); the robot
+//!   against itself: [`Query::self_collide`], [`Query::self_distance`] over
+//!   the pairs [`LinkSet::set_pair_enabled`] (and an SRDF) leave enabled.
 //! * [`read_point_cloud`]: PCD and PLY files as points (the library's
 //!   readers).
 //!
-//! Units are metres and radians; a [`Pose`] is `position` (x y z) and
-//! `orientation` (qx qy qz qw, ROS order).  Request, option and result
-//! types are the C structs themselves, with `Default` giving the library's
-//! defaults; set fields with `..Default::default()`.  Every fallible call
-//! returns `Result<_, Error>` with the C status and message.
+//! Units are metres and radians; frames are right-handed; a [`Pose`] is
+//! `position` (x y z) and `orientation` (qx qy qz qw, ROS order), and every
+//! pose and point says which frame it is in (the map frame unless told
+//! otherwise).  Requests, options and results are plain structs: build them
+//! with `Default` (the C library's own defaults) and struct update syntax
+//! (`..Default::default()`); classes and switches are enums
+//! ([`CellClass`], [`UnknownPolicy`], [`Engine`], [`InsertMode`],
+//! [`ObstacleGeometry`]), flags are `bool`.  Every fallible call returns
+//! [`Result`], whose [`Error`] has the C status as an [`ErrorKind`] and the
+//! library's message naming the function and the argument.
 //!
 //! Threads: `Octree` and `LinkSet` are `Send + Sync` (any number of
 //! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
 //! use one per thread.
+//!
+//! ```
+//! use octoprox::{pose_at, CollisionRequest, InsertOptions, LinkSet, Octree, Query, Shape};
+//!
+//! let mut map = Octree::new(&Default::default())?; // 5 cm cells
+//! let frame = [[1.0f32, 0.0, 0.0], [1.0, 0.5, 0.0]]; // sensor frame, metres
+//! let sensor = InsertOptions { sensor_pose: pose_at(0.0, 0.0, 1.2), ..Default::default() };
+//! map.insert_points(&frame, &sensor)?;
+//! let mut robot = LinkSet::new()?;
+//! let hand = robot.add_link("hand")?;
+//! robot.add_shape(hand, &Shape::sphere(0.08))?;
+//! robot.set_poses(&[pose_at(0.95, 0.0, 1.2)])?; // map frame
+//! let hit = Query::new(&Default::default())?.collide(&map, &robot, &CollisionRequest::default())?;
+//! assert!(hit.collided);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
+#![deny(missing_docs)]
 
 mod batch;
+mod batch_types;
 mod cloud;
 mod depth;
+mod enums;
 mod error;
 mod linkset;
+mod map_types;
 mod octree;
 mod points;
 mod query;
+mod requests;
+mod results;
 mod robot;
 mod self_collision;
+mod self_types;
 
 pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
-pub use cloud::{read_point_cloud, PointCloud, PointCloudInfo};
+pub use batch_types::{BatchRequest, MotionRequest, MotionResult};
+pub use cloud::{read_point_cloud, CloudEncoding, CloudFormat, PointCloud, PointCloudInfo};
 pub use depth::{camera_intrinsics, CameraIntrinsics, DepthImage};
-pub use error::{status_name, Error, Result};
+pub use enums::{CellClass, CellClasses, Engine, InsertMode, MapFormat, ObstacleGeometry,
+                UnknownPolicy};
+pub use error::{status_name, Error, ErrorKind, Result};
 pub use linkset::{LinkSet, Shape, ShapeKind};
+pub use map_types::{CellInfo, InsertOptions, InsertReport, Leaf, OctreeOptions, OctreeStats};
 pub use octree::Octree;
 pub use points::Points;
 pub use query::Query;
-pub use robot::{JointInfo, UrdfOptions};
+pub use requests::{CollisionRequest, DistanceRequest, PathRequest, QueryOptions};
+pub use results::{CollisionResult, Contact, CostBox, DistanceResult, PathResult, QueryStats};
+pub use robot::{JointInfo, JointType, UrdfOptions};
+pub use self_types::{PairSamplingOptions, PairSamplingResult, SelfCollisionRequest,
+                     SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
 
 use octoprox_sys as sys;
 
-/// A rigid transform: position in metres, unit quaternion x y z w (ROS order).
+/// A rigid transform: the pose of a child frame in a parent frame.
+/// `position` in metres, `orientation` a unit quaternion x y z w (ROS
+/// order), normalised by the library; a zero or non-finite quaternion is an
+/// invalid argument.  `Pose::default()` is the identity.
 pub type Pose = sys::opx_pose;
-pub type OctreeOptions = sys::opx_octree_options;
-pub type InsertOptions = sys::opx_insert_options;
-pub type InsertReport = sys::opx_insert_report;
-pub type CellInfo = sys::opx_cell_info;
-pub type OctreeStats = sys::opx_octree_stats;
-pub type Leaf = sys::opx_leaf;
-pub type QueryOptions = sys::opx_query_options;
-pub type QueryStats = sys::opx_query_stats;
-pub type CollisionRequest = sys::opx_collision_request;
-pub type CollisionResult = sys::opx_collision_result;
-pub type Contact = sys::opx_contact;
-pub type CostBox = sys::opx_cost_box;
-pub type DistanceRequest = sys::opx_distance_request;
-pub type DistanceResult = sys::opx_distance_result;
-pub type SelfCollisionRequest = sys::opx_self_collision_request;
-pub type SelfCollisionResult = sys::opx_self_collision_result;
-pub type SelfContact = sys::opx_self_contact;
-pub type SelfDistanceRequest = sys::opx_self_distance_request;
-pub type SelfDistanceResult = sys::opx_self_distance_result;
-pub type PairSamplingOptions = sys::opx_pair_sampling_options;
-pub type PairSamplingResult = sys::opx_pair_sampling_result;
-pub type PathRequest = sys::opx_path_request;
-pub type PathResult = sys::opx_path_result;
-pub type BatchRequest = sys::opx_batch_request;
-pub type MotionRequest = sys::opx_motion_request;
-pub type MotionResult = sys::opx_motion_result;
 
 /// The constants of the C headers (`OPX_CELL_OCCUPIED`, `OPX_MASK_ALL_KNOWN`,
-/// `OPX_UNKNOWN_OCCUPIED`, `OPX_ENGINE_AMORTIZED`, `OPX_FORMAT_BT`, ...).
+/// `OPX_ERROR_IO`, ...), for code that also talks to `octoprox-sys`; this
+/// crate's API takes and returns their enums ([`CellClass`],
+/// [`CellClasses`], [`ErrorKind`], ...).
 pub mod consts {
     pub use octoprox_sys::{
         OPX_CLOUD_ENCODING_ASCII, OPX_CLOUD_ENCODING_BINARY, OPX_CLOUD_ENCODING_BINARY_COMPRESSED,
@@ -87,13 +103,15 @@ pub mod consts {
         OPX_ERROR_UNSUPPORTED, OPX_ERROR_VERSION, OPX_FORMAT_AUTO, OPX_FORMAT_BT, OPX_FORMAT_OT,
         OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
         OPX_JOINT_FLOATING, OPX_JOINT_NONE, OPX_JOINT_PLANAR, OPX_JOINT_PRISMATIC, OPX_JOINT_REVOLUTE, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
-        OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64,
+        OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OBSTACLE_CELLS, OPX_OBSTACLE_POINT_EXTENTS,
+        OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64,
         OPX_SCALAR_UINT16, OPX_UNKNOWN_FREE, OPX_UNKNOWN_OCCUPIED,
         OPX_VERSION_MAJOR, OPX_VERSION_MINOR, OPX_VERSION_PATCH,
     };
 }
 
-/// A pose at `position` with the identity orientation.
+/// A pose at (`x`, `y`, `z`) metres in its parent frame, with the identity
+/// orientation.
 pub fn pose_at(x: f64, y: f64, z: f64) -> Pose {
     Pose { position: [x, y, z], orientation: [0.0, 0.0, 0.0, 1.0] }
 }
@@ -114,14 +132,14 @@ pub fn version_number() -> u32 {
 /// bindings were generated from: same major version and a minor at least
 /// as new, but on 0.x (where a minor may change the ABI, as the SONAME
 /// `liboctoprox.so.0.MINOR` says) the same minor.  Every constructor calls
-/// it.
+/// it; a mismatch is an [`ErrorKind::Version`] error.
 pub fn check_version() -> Result<()> {
     let number = version_number() as i32;
     if compatible(number / 10000, number / 100 % 100) {
         return Ok(());
     }
-    Err(Error::new(
-        sys::OPX_ERROR_VERSION,
+    Err(Error::of_kind(
+        ErrorKind::Version,
         format!(
             "octoprox: library version {} is incompatible with the bindings' {}.{}",
             version(),

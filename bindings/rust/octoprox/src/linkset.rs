@@ -1,30 +1,78 @@
 //! The robot: a set of links with shapes (`opx_linkset`).
-use crate::error::{c_string, check, to_c_string, Error, Result};
+//!
+//! ```
+//! use octoprox::{pose_at, LinkSet, Shape, ShapeKind};
+//!
+//! let mut robot = LinkSet::new()?;
+//! let hand = robot.add_link("hand")?;
+//! robot.add_shape(hand, &Shape::sphere(0.05))?;
+//! // A 20 cm long finger 10 cm ahead of the hand's origin (link frame).
+//! let finger = Shape::new(ShapeKind::Capsule { radius: 0.01, length: 0.2 });
+//! robot.add_shape(hand, &finger.at(pose_at(0.0, 0.0, 0.1)))?;
+//! robot.set_padding(0.01)?; // 1 cm around every shape
+//! robot.set_poses(&[pose_at(0.5, 0.0, 1.0)])?; // the hand in the map frame
+//! assert_eq!((robot.link_count()?, robot.shape_count(hand)?), (1, 2));
+//! assert_eq!(robot.find_link("hand")?, hand);
+//! assert_eq!(robot.pose(hand)?.position, [0.5, 0.0, 1.0]);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
+use crate::error::{c_string, check, to_c_string, Error, ErrorKind, Result};
 use crate::{check_version, sys, Pose};
 use std::ptr;
 
-/// The geometry of a shape, in metres, in the shape frame (see
-/// `include/octoprox/linkset.h` for each convention).
+/// The geometry of a shape, in metres, in the shape frame (centred on its
+/// origin).  A padded shape is the shape grown by a ball of the padding's
+/// radius.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ShapeKind<'a> {
-    Sphere { radius: f64 },
-    /// Full edge lengths along x, y, z.
-    Box { size: [f64; 3] },
-    /// Full length along z.
-    Cylinder { radius: f64, length: f64 },
-    /// `length` of the cylindrical part along z (FCL's convention).
-    Capsule { radius: f64, length: f64 },
+    /// A sphere.
+    Sphere {
+        /// Radius, metres.
+        radius: f64,
+    },
+    /// A box.
+    Box {
+        /// FULL edge lengths along x, y, z, metres (as URDF and FCL).
+        size: [f64; 3],
+    },
+    /// A cylinder along z.
+    Cylinder {
+        /// Radius, metres.
+        radius: f64,
+        /// FULL length along z, metres (URDF).
+        length: f64,
+    },
+    /// A capsule along z: a cylinder with hemispherical ends.
+    Capsule {
+        /// Radius, metres.
+        radius: f64,
+        /// Length of the cylindrical part (the distance between the two
+        /// sphere centres; FCL's convention), metres.
+        length: f64,
+    },
     /// The solid convex hull of the vertices.
-    Convex { vertices: &'a [[f64; 3]] },
-    /// A triangle surface over the vertices.
-    Mesh { vertices: &'a [[f64; 3]], triangles: &'a [[u32; 3]] },
+    Convex {
+        /// Points in the shape frame, metres.
+        vertices: &'a [[f64; 3]],
+    },
+    /// A triangle surface over the vertices: a cell wholly inside a closed
+    /// mesh touches no triangle and is not reported (use a convex hull for
+    /// a solid part).
+    Mesh {
+        /// Points in the shape frame, metres.
+        vertices: &'a [[f64; 3]],
+        /// Three vertex indices per triangle.
+        triangles: &'a [[u32; 3]],
+    },
 }
 
 /// A shape and its pose in the link frame.  The library copies vertices
 /// and triangles, so they need only live for the `add_shape` call.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Shape<'a> {
+    /// The geometry, in the shape frame.
     pub kind: ShapeKind<'a>,
+    /// The shape frame in the link frame (default: identity).
     pub pose: Pose,
 }
 
@@ -34,10 +82,13 @@ impl<'a> Shape<'a> {
         Shape { kind, pose: Pose::default() }
     }
 
+    /// A sphere of `radius` metres at the link origin.
     pub fn sphere(radius: f64) -> Shape<'a> {
         Shape::new(ShapeKind::Sphere { radius })
     }
 
+    /// A box of FULL edge lengths `size` (x, y, z; metres) at the link
+    /// origin.
     pub fn cuboid(size: [f64; 3]) -> Shape<'a> {
         Shape::new(ShapeKind::Box { size })
     }
@@ -90,8 +141,8 @@ impl<'a> Shape<'a> {
                 triangles: slice(c.indices, c.triangle_count),
             },
             kind => {
-                return Err(Error::new(sys::OPX_ERROR_UNSUPPORTED,
-                                      format!("LinkSet::shape: unknown shape kind {}", kind)))
+                return Err(Error::of_kind(ErrorKind::Version,
+                                          format!("LinkSet::shape: unknown shape kind {}", kind)))
             }
         };
         Ok(Shape { kind, pose: c.pose })
@@ -111,7 +162,11 @@ unsafe fn slice<'a, S, T>(data: *const S, count: usize) -> &'a [T] {
 
 /// A robot as a set of links, each with shapes, a padding, an enabled flag
 /// and a pose in the map frame.  Reading methods take `&self` (queries may
-/// run on many threads at once); changing methods take `&mut self`.
+/// run on many threads at once); changing methods take `&mut self`.  The
+/// library copies what it is given (names, vertices, poses).  A bad
+/// argument (an unknown link index, a negative size or padding, a zero
+/// quaternion) is an [`crate::ErrorKind::InvalidArgument`] that changes
+/// nothing.
 #[derive(Debug)]
 pub struct LinkSet {
     raw: *mut sys::opx_linkset,
@@ -139,7 +194,7 @@ impl LinkSet {
         Ok(LinkSet { raw })
     }
 
-    /// A deep copy (shapes, names, poses, paddings, enabled flags).
+    /// A deep copy (shapes, names, poses, paddings, enabled flags, pairs).
     pub fn try_clone(&self) -> Result<LinkSet> {
         let mut raw = ptr::null_mut();
         // SAFETY: const call; out is valid.
@@ -147,7 +202,9 @@ impl LinkSet {
         Ok(LinkSet { raw })
     }
 
-    /// Adds a link with an identity pose; returns its index.
+    /// Adds a link named `name` (names need not be unique;
+    /// [`LinkSet::find_link`] returns the first) with an identity pose;
+    /// returns its index.
     pub fn add_link(&mut self, name: &str) -> Result<u32> {
         let name = to_c_string(name, "LinkSet::add_link: name")?;
         let mut index = 0;
@@ -156,7 +213,8 @@ impl LinkSet {
         Ok(index)
     }
 
-    /// Adds a shape to `link`; returns its index within the link.
+    /// Adds a shape to `link`; returns its index within the link.  A mesh
+    /// is built into a tree over its triangles here, once.
     pub fn add_shape(&mut self, link: u32, shape: &Shape<'_>) -> Result<u32> {
         let c = shape.to_c();
         let mut index = 0;
@@ -166,6 +224,7 @@ impl LinkSet {
         Ok(index)
     }
 
+    /// The number of links.
     pub fn link_count(&self) -> Result<u32> {
         let mut count = 0;
         // SAFETY: const call.
@@ -173,6 +232,7 @@ impl LinkSet {
         Ok(count)
     }
 
+    /// The number of shapes of `link`.
     pub fn shape_count(&self, link: u32) -> Result<u32> {
         let mut count = 0;
         // SAFETY: const call.
@@ -202,7 +262,7 @@ impl LinkSet {
         Ok(unsafe { c_string(name) })
     }
 
-    /// The first link named `name`.
+    /// The first link named `name`; an invalid argument when none.
     pub fn find_link(&self, name: &str) -> Result<u32> {
         let name = to_c_string(name, "LinkSet::find_link: name")?;
         let mut index = 0;
@@ -217,19 +277,21 @@ impl LinkSet {
         check(unsafe { sys::opx_linkset_set_padding(self.raw, padding) })
     }
 
-    /// A link's own padding, added to the global one.
+    /// A link's own padding, metres (>= 0), added to the global one.
     pub fn set_link_padding(&mut self, link: u32, padding: f64) -> Result<()> {
         // SAFETY: exclusive access.
         check(unsafe { sys::opx_linkset_set_link_padding(self.raw, link, padding) })
     }
 
-    /// Disabled links take part in no query.
+    /// Enables or disables a link: disabled links take part in no query
+    /// (e.g. links the sensor cannot see).  All links start enabled.
     pub fn set_link_enabled(&mut self, link: u32, enabled: bool) -> Result<()> {
         // SAFETY: exclusive access.
         check(unsafe { sys::opx_linkset_set_link_enabled(self.raw, link, i32::from(enabled)) })
     }
 
-    /// Every link's pose in the map frame, in link order.
+    /// Every link's pose in the map frame, in link order: `poses.len()` must
+    /// equal the link count.  On an invalid pose nothing changes.
     pub fn set_poses(&mut self, poses: &[Pose]) -> Result<()> {
         // SAFETY: poses holds poses.len() packed poses; exclusive access.
         check(unsafe { sys::opx_linkset_set_poses(self.raw, poses.as_ptr(), poses.len(), 0) })

@@ -1,5 +1,24 @@
 //! Borrowed point arrays handed to the library by address and stride,
 //! never copied.
+//!
+//! ```
+//! use octoprox::{Octree, OctreeOptions, Points};
+//!
+//! // x y z float32 then an rgb word: a ROS PointCloud2 with point_step 16.
+//! let mut data = Vec::new();
+//! for xyz in [[1.0f32, 0.0, 0.0], [0.0, 1.0, 0.0]] {
+//!     xyz.iter().for_each(|v| data.extend_from_slice(&v.to_ne_bytes()));
+//!     data.extend_from_slice(&0x00ff00u32.to_ne_bytes());
+//! }
+//! let points = Points::strided_f32(&data, 2, 16)?;
+//! assert_eq!((points.len(), points.stride(), points.as_ptr()), (2, 16, data.as_ptr()));
+//! let mut map = Octree::new(&OctreeOptions::default())?;
+//! assert_eq!(map.insert_points(points, &Default::default())?.points_used, 2);
+//! // Every other row of a 4-column f64 array: 8 values apart.
+//! let rows = [1.0, 0.0, 0.0, 5.0, 7.0, 7.0, 7.0, 7.0, 0.0, 1.0, 0.0, 5.0];
+//! assert_eq!(Points::from_f64_rows(&rows, 8)?.len(), 2);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
 use crate::error::{Error, Result};
 use crate::sys;
 use std::marker::PhantomData;
@@ -23,7 +42,8 @@ impl<'a> Points<'a> {
     /// float32 points in `bytes`: point i's x, y, z are the three
     /// native-endian floats at byte `i * stride` (stride >= 12; x, y, z need
     /// not be aligned).  For a `PointCloud2` whose x is at offset `o`, pass
-    /// `&data[o..]`.
+    /// `&data[o..]`.  A stride below one point, or points past the end of
+    /// `bytes`, are an invalid argument.
     pub fn strided_f32(bytes: &'a [u8], count: usize, stride: usize) -> Result<Points<'a>> {
         Points::strided(bytes, count, stride, sys::OPX_SCALAR_FLOAT32, 4)
     }
@@ -34,7 +54,8 @@ impl<'a> Points<'a> {
     }
 
     /// float32 points in a flat slice, `stride` floats apart (e.g. 4 for
-    /// x y z intensity), as many as fit.
+    /// x y z intensity), as many as fit; a stride below 3 is an invalid
+    /// argument.
     pub fn from_f32_rows(values: &'a [f32], stride: usize) -> Result<Points<'a>> {
         let count = row_count(values.len(), stride, "Points::from_f32_rows")?;
         Ok(Points::raw(values.as_ptr().cast(), count, stride * 4, sys::OPX_SCALAR_FLOAT32))
@@ -46,10 +67,12 @@ impl<'a> Points<'a> {
         Ok(Points::raw(values.as_ptr().cast(), count, stride * 8, sys::OPX_SCALAR_FLOAT64))
     }
 
+    /// The number of points.
     pub fn len(&self) -> usize {
         self.count
     }
 
+    /// Whether there are no points.
     pub fn is_empty(&self) -> bool {
         self.count == 0
     }

@@ -1,5 +1,27 @@
 //! Link sets from URDF, their joints and forward kinematics
-//! (`include/octoprox/robot.h`).
+//! (`include/octoprox/robot.h`).  Joint positions are in radians (revolute,
+//! continuous) or metres (prismatic), in the URDF's joint order ("model
+//! order", fixed joints included).
+//!
+//! ```
+//! use octoprox::{JointType, LinkSet, UrdfOptions};
+//!
+//! let urdf = r#"<robot name="arm">
+//!   <link name="base"><collision><geometry><box size="0.2 0.2 0.1"/></geometry></collision></link>
+//!   <link name="arm"><collision><origin xyz="0.25 0 0"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+//!   <joint name="shoulder" type="revolute"><parent link="base"/><child link="arm"/>
+//!     <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="-1.5" upper="1.5" velocity="1" effort="10"/></joint>
+//! </robot>"#;
+//! let mut robot = LinkSet::from_urdf_string(urdf, &UrdfOptions::default())?;
+//! let shoulder = robot.joint_info(robot.find_joint("shoulder")?)?;
+//! assert_eq!((shoulder.joint_type, shoulder.limits), (JointType::Revolute, Some((-1.5, 1.5))));
+//! robot.set_joint_positions(&[std::f64::consts::FRAC_PI_2], None)?; // the root at the origin
+//! let arm = robot.find_link("arm")?;
+//! assert_eq!(robot.pose(arm)?.position, [0.0, 0.0, 0.2]); // the link frame, map frame
+//! assert_eq!(robot.joint_positions()?, [std::f64::consts::FRAC_PI_2]);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
+use crate::enums::{c_enum, known};
 use crate::error::{c_string, check, to_c_string, Result};
 use crate::{check_version, sys, LinkSet, Pose};
 use std::ffi::CString;
@@ -22,23 +44,49 @@ pub struct UrdfOptions {
     pub srdf_path: Option<PathBuf>,
 }
 
-/// One URDF joint (see `opx_joint_info`).
+c_enum! {
+    /// The type of a URDF joint.  Floating and planar joints are not moved
+    /// by forward kinematics: they stay at their origin, as if fixed.
+    JointType {
+        /// No motion.
+        Fixed = sys::OPX_JOINT_FIXED,
+        /// A rotation about the axis within limits, radians.
+        Revolute = sys::OPX_JOINT_REVOLUTE,
+        /// A rotation about the axis without limits, radians.
+        Continuous = sys::OPX_JOINT_CONTINUOUS,
+        /// A translation along the axis, metres.
+        Prismatic = sys::OPX_JOINT_PRISMATIC,
+        /// Six degrees of freedom; held at its origin.
+        Floating = sys::OPX_JOINT_FLOATING,
+        /// Motion in a plane; held at its origin.
+        Planar = sys::OPX_JOINT_PLANAR,
+    }
+}
+
+/// One URDF joint, from [`LinkSet::joint_info`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointInfo {
+    /// The joint's name in the URDF.
     pub name: String,
-    /// `consts::OPX_JOINT_*`.
-    pub joint_type: i32,
+    /// Its type.
+    pub joint_type: JointType,
+    /// The parent link's index in the link set.
     pub parent_link: Option<u32>,
+    /// The child link's index in the link set.
     pub child_link: Option<u32>,
     /// Unit axis in the child link frame.
     pub axis: [f64; 3],
     /// The child link frame in the parent link frame at position 0.
     pub origin: Pose,
-    /// Position limits (metres or radians) when the URDF has `<limit>`.
+    /// Lower and upper position limits (metres or radians) when the URDF
+    /// has `<limit>`; continuous joints: -infinity, +infinity.
     pub limits: Option<(f64, f64)>,
+    /// Velocity limit as in the URDF (m/s or rad/s); 0 when absent.
     pub velocity: f64,
+    /// Effort limit as in the URDF (N or N m); 0 when absent.
     pub effort: f64,
-    /// The joint this one mimics: position = multiplier * master + offset.
+    /// The joint this one mimics, the multiplier and the offset: position =
+    /// multiplier * master + offset.
     pub mimic: Option<(u32, f64, f64)>,
 }
 
@@ -88,8 +136,13 @@ fn index_or_none(index: u32) -> Option<u32> {
 }
 
 impl LinkSet {
-    /// A link set from a URDF file: one link per `<link>`, one shape per
-    /// `<collision>`, poses at every joint 0 with the root at the origin.
+    /// A link set from a URDF file: one link per `<link>` (same names, file
+    /// order), one shape per `<collision>` (box, sphere, cylinder, mesh read
+    /// with assimp), poses at every joint 0 with the root at the map
+    /// origin.  Errors: [`crate::ErrorKind::Io`] (the file or a mesh cannot
+    /// be read, an unknown package), [`crate::ErrorKind::Corrupt`]
+    /// (malformed XML, URDF or SRDF, bad geometry),
+    /// [`crate::ErrorKind::Unsupported`] (other collision geometry).
     pub fn from_urdf_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<LinkSet> {
         let path = path_c_string(path.as_ref(), "LinkSet::from_urdf_file: path")?;
         let options = options.to_c()?;
@@ -99,7 +152,9 @@ impl LinkSet {
         })
     }
 
-    /// A link set from URDF XML text.
+    /// A link set from URDF XML text, as [`LinkSet::from_urdf_file`];
+    /// relative mesh paths start at `options.base_dir` or the current
+    /// directory.
     pub fn from_urdf_string(xml: &str, options: &UrdfOptions) -> Result<LinkSet> {
         let xml = to_c_string(xml, "LinkSet::from_urdf_string: xml")?;
         let options = options.to_c()?;
@@ -124,7 +179,7 @@ impl LinkSet {
         Ok(count)
     }
 
-    /// The joint named `name`.
+    /// The joint named `name`; an invalid argument when none.
     pub fn find_joint(&self, name: &str) -> Result<u32> {
         let name = to_c_string(name, "LinkSet::find_joint: name")?;
         let mut index = 0;
@@ -140,7 +195,7 @@ impl LinkSet {
         check(unsafe { sys::opx_linkset_get_joint_info(self.as_raw(), joint, &mut j) })?;
         Ok(JointInfo {
             name: unsafe { c_string(j.name) },
-            joint_type: j.type_,
+            joint_type: known(JointType::from_raw(j.type_), j.type_, "joint type")?,
             parent_link: index_or_none(j.parent_link),
             child_link: index_or_none(j.child_link),
             axis: j.axis,
@@ -154,7 +209,10 @@ impl LinkSet {
 
     /// FK: every joint position in model order (`positions.len()` = the
     /// joint count), the root link at `base` in the map frame (None:
-    /// identity); then every link pose is set.
+    /// identity); then every link pose is set.  Values of fixed, floating
+    /// and planar joints are ignored, a mimic joint follows its master;
+    /// values must be finite and within +-1e6.  A set not made from URDF:
+    /// [`crate::ErrorKind::Unsupported`].  On error nothing changes.
     pub fn set_joint_positions(&mut self, positions: &[f64], base: Option<&Pose>) -> Result<()> {
         let base = base.map_or(ptr::null(), |pose| pose as *const Pose);
         // SAFETY: positions holds len values; exclusive access.
@@ -164,7 +222,8 @@ impl LinkSet {
         })
     }
 
-    /// FK with only the named joints changed (the others keep their values).
+    /// FK with only the named joints changed (the others keep their values,
+    /// initially 0); an unknown name is an invalid argument naming it.
     pub fn set_named_joint_positions(&mut self, named: &[(&str, f64)], base: Option<&Pose>)
         -> Result<()> {
         let mut names = Vec::with_capacity(named.len());
@@ -181,7 +240,8 @@ impl LinkSet {
         })
     }
 
-    /// The joint positions in model order, as FK uses them.
+    /// The joint positions in model order, as FK uses them (mimic joints:
+    /// their computed value; fixed, floating, planar: 0).
     pub fn joint_positions(&self) -> Result<Vec<f64>> {
         let mut count = 0usize;
         // SAFETY: capacity 0 with NULL asks for the count.
@@ -200,7 +260,9 @@ impl LinkSet {
         Ok(positions)
     }
 
-    /// The SRDF `<disable_collisions>` pairs, as link indices.
+    /// The SRDF `<disable_collisions>` pairs as the file lists them, as
+    /// link indices (later [`LinkSet::set_pair_enabled`] calls change the
+    /// checked pairs, not this list).
     pub fn disabled_pairs(&self) -> Result<Vec<(u32, u32)>> {
         let mut count = 0;
         // SAFETY: const calls.

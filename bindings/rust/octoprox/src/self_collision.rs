@@ -1,5 +1,26 @@
 //! Self-collision (`self_collision.h`): a link set against itself at its
 //! current poses, over the pairs of links it checks.
+//!
+//! ```
+//! use octoprox::{pose_at, LinkSet, Query, QueryOptions, SelfCollisionRequest,
+//!                SelfDistanceRequest, Shape};
+//!
+//! // Two 10 cm cubes, 1 cm apart along x (map frame).
+//! let mut links = LinkSet::new()?;
+//! for name in ["left", "right"] {
+//!     let link = links.add_link(name)?;
+//!     links.add_shape(link, &Shape::cuboid([0.1, 0.1, 0.1]))?;
+//! }
+//! links.set_poses(&[pose_at(0.0, 0.0, 0.0), pose_at(0.11, 0.0, 0.0)])?;
+//! let mut query = Query::new(&QueryOptions::default())?;
+//! let near = query.self_distance(&links, &SelfDistanceRequest::default())?;
+//! assert!(near.found && (near.distance - 0.01).abs() < 1e-12);
+//! links.set_padding(0.005)?; // 5 mm on each side: they touch
+//! assert!(query.self_collide(&links, &SelfCollisionRequest::default())?.collided);
+//! links.set_pair_enabled(0, 1, false)?;
+//! assert!(!query.self_collide(&links, &SelfCollisionRequest::default())?.collided);
+//! # Ok::<(), octoprox::Error>(())
+//! ```
 use crate::error::{check, Result};
 use crate::{sys, LinkSet, PairSamplingOptions, PairSamplingResult, Query, SelfCollisionRequest,
             SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
@@ -14,24 +35,25 @@ impl Query {
     /// then read with [`Query::self_contacts`].
     pub fn self_collide(&mut self, links: &LinkSet, request: &SelfCollisionRequest)
         -> Result<SelfCollisionResult> {
-        let mut out = SelfCollisionResult::default();
+        let request = request.to_c();
+        let mut out = sys::opx_self_collision_result::default();
         self.self_contact_count = 0;
         // SAFETY: live handles; links is only read.
         check(unsafe {
-            sys::opx_query_self_collide(self.as_raw_mut(), links.as_raw(), request, &mut out)
+            sys::opx_query_self_collide(self.as_raw_mut(), links.as_raw(), &request, &mut out)
         })?;
         self.self_contact_count = out.contact_count as usize;
-        Ok(out)
+        Ok(SelfCollisionResult::from_c(&out))
     }
 
     /// Contact `index` of the last self-collision query: `link_a < link_b`,
     /// their shapes, and with `compute_penetration` the depth, normal and
     /// point (map frame).
     pub fn self_contact(&self, index: usize) -> Result<SelfContact> {
-        let mut out = SelfContact::default();
+        let mut out = sys::opx_self_contact::default();
         // SAFETY: const call.
         check(unsafe { sys::opx_query_get_self_contact(self.as_raw(), index, &mut out) })?;
-        Ok(out)
+        Ok(SelfContact::from_c(&out))
     }
 
     /// All contacts of the last self-collision query.
@@ -42,22 +64,24 @@ impl Query {
     /// The minimum distance between the link set's checked pairs of links
     /// (paddings included), the two links and shapes, and the witness
     /// points `point_on_a`, `point_on_b` (map frame).  `request.cutoff`
-    /// (0: none) and `request.signed_distance` as in the C header.
+    /// (0: none) and `request.signed_distance` as documented on
+    /// [`SelfDistanceRequest`].
     pub fn self_distance(&mut self, links: &LinkSet, request: &SelfDistanceRequest)
         -> Result<SelfDistanceResult> {
-        let mut out = SelfDistanceResult::default();
+        let request = request.to_c();
+        let mut out = sys::opx_self_distance_result::default();
         // SAFETY: live handles; links is only read.
         check(unsafe {
-            sys::opx_query_self_distance(self.as_raw_mut(), links.as_raw(), request, &mut out)
+            sys::opx_query_self_distance(self.as_raw_mut(), links.as_raw(), &request, &mut out)
         })?;
-        Ok(out)
+        Ok(SelfDistanceResult::from_c(&out))
     }
 }
 
 impl LinkSet {
     /// Whether self-collision queries check links `a` and `b` (`a != b`,
-    /// either order).  Every pair starts enabled but an SRDF's disabled
-    /// pairs.
+    /// either order; else an invalid argument).  Every pair starts enabled
+    /// but an SRDF's disabled pairs; a disabled link takes part in no pair.
     pub fn set_pair_enabled(&mut self, a: u32, b: u32, enabled: bool) -> Result<()> {
         // SAFETY: exclusive access.
         check(unsafe {
@@ -76,17 +100,20 @@ impl LinkSet {
     /// Disables every pair of links that never collides over
     /// `options.samples` random configurations (each moving joint uniform
     /// within its limits), as MoveIt's setup assistant does; with
-    /// `options.also_always_colliding = 1` also the pairs colliding in
-    /// every sample, with `options.also_colliding_now = 1` those colliding
-    /// at the current poses.  A link set from URDF only; its poses and
-    /// joints do not change.  Returns how many pairs each rule disabled.
+    /// `options.also_always_colliding` also the pairs colliding in every
+    /// sample, with `options.also_colliding_now` those colliding at the
+    /// current poses.  A link set from URDF only (else
+    /// [`crate::ErrorKind::Unsupported`]); its poses and joints do not
+    /// change.  Sampling can miss a rare colliding configuration.  Returns
+    /// how many pairs each rule disabled.
     pub fn disable_never_colliding_pairs(&mut self, options: &PairSamplingOptions)
         -> Result<PairSamplingResult> {
-        let mut out = PairSamplingResult::default();
+        let options = options.to_c();
+        let mut out = sys::opx_pair_sampling_result::default();
         // SAFETY: exclusive access; the output is valid.
         check(unsafe {
-            sys::opx_linkset_disable_never_colliding_pairs(self.as_raw_mut(), options, &mut out)
+            sys::opx_linkset_disable_never_colliding_pairs(self.as_raw_mut(), &options, &mut out)
         })?;
-        Ok(out)
+        Ok(PairSamplingResult::from_c(&out))
     }
 }

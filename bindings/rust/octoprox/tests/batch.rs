@@ -4,9 +4,9 @@
 //! input is an error naming the argument.
 mod common;
 use common::*;
-use octoprox::consts::*;
-use octoprox::{pose_at, BasePoses, BatchRequest, CollisionRequest, DistanceRequest, LinkSet,
-               MotionRequest, Octree, Query, QueryOptions, UrdfOptions};
+use octoprox::{pose_at, BasePoses, BatchRequest, CollisionRequest, DistanceRequest, ErrorKind,
+               InsertMode, LinkSet, MotionRequest, ObstacleGeometry, Octree, Query, QueryOptions,
+               UrdfOptions};
 
 const JOINTS: usize = 7;
 
@@ -47,7 +47,7 @@ fn scatter_map() -> Octree {
         .map(|_| [rng.uniform(-1.1, 1.1), rng.uniform(-1.1, 1.1), rng.uniform(0.15, 1.9)])
         .collect();
     let mut tree = new_tree(0.05);
-    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, OPX_INSERT_ENDPOINTS)).unwrap();
+    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
     tree
 }
 
@@ -63,7 +63,7 @@ fn new_query() -> Query {
 fn single(query: &mut Query, tree: &Octree, robot: &mut LinkSet, q: &[f64]) -> bool {
     robot.set_joint_positions(q, None).unwrap();
     let request = CollisionRequest { max_contacts: 0, ..Default::default() };
-    query.collide(tree, robot, &request).unwrap().collided != 0
+    query.collide(tree, robot, &request).unwrap().collided
 }
 
 #[test]
@@ -73,7 +73,7 @@ fn configurations_equal_single_calls_for_every_thread_count() {
     let expected: Vec<bool> = q.chunks(JOINTS).map(|row| single(&mut reference, &tree, &mut robot, row)).collect();
     assert!(expected.iter().any(|&c| c) && expected.iter().any(|&c| !c));
     for threads in 1..=3 {
-        let request = BatchRequest { max_threads: threads, compute_distance: 1, ..Default::default() };
+        let request = BatchRequest { max_threads: threads, compute_distance: true, ..Default::default() };
         let answers = new_query().check_configurations(&tree, &robot, &q, BasePoses::Origin, &request).unwrap();
         assert_eq!(answers.collided, expected);
         for (row, distance) in q.chunks(JOINTS).zip(&answers.distances) {
@@ -94,12 +94,12 @@ fn base_poses_and_self_collision() {
     for (i, row) in q.chunks(JOINTS).enumerate() {
         robot.set_joint_positions(row, Some(&bases[i])).unwrap();
         let request = CollisionRequest { max_contacts: 0, ..Default::default() };
-        assert_eq!(answers.collided[i], reference.collide(&tree, &robot, &request).unwrap().collided != 0);
+        assert_eq!(answers.collided[i], reference.collide(&tree, &robot, &request).unwrap().collided);
     }
     let shared = query.check_configurations(&tree, &robot, &q, BasePoses::Shared(bases[0]),
                                             &BatchRequest::default()).unwrap();
     assert_eq!(shared.collided.len(), 40);
-    let with_self = BatchRequest { self_collision: 1, max_threads: 2, ..Default::default() };
+    let with_self = BatchRequest { self_collision: true, max_threads: 2, ..Default::default() };
     let world = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default()).unwrap();
     let both = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &with_self).unwrap();
     assert!(world.collided.iter().zip(&both.collided).all(|(w, b)| !w || *b));
@@ -123,7 +123,7 @@ fn motions_equal_a_walk_over_their_samples() {
             };
             single(&mut reference, &tree, &mut robot, &q)
         });
-        let fraction = first.map_or(-1.0, |i| i as f64 / n as f64);
+        let fraction = first.map(|i| i as f64 / n as f64);
         assert_eq!(result.first_collision_fraction, fraction);
         assert_eq!((batch.collided[m], batch.first_fractions[m]), (first.is_some(), fraction));
     }
@@ -135,7 +135,7 @@ fn bad_input_is_an_error_naming_the_argument() {
     let mut query = new_query();
     let error = query.check_configurations(&tree, &robot, &[0.0; 10], BasePoses::Origin, &BatchRequest::default())
         .unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_INVALID_ARGUMENT);
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument);
     let mut q = rows(2, 1);
     q[9] = f64::NAN;
     let error = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default())
@@ -146,4 +146,29 @@ fn bad_input_is_an_error_naming_the_argument() {
     assert!(error.message().contains("request->resolution"), "{}", error.message());
     let none = query.check_configurations(&tree, &robot, &[], BasePoses::Origin, &BatchRequest::default()).unwrap();
     assert!(none.collided.is_empty());
+}
+
+/// Point extents shrink obstacles to their points' boxes, so a batch with
+/// them finds no collision the cell cubes do not, and the same answers as
+/// single calls with the same geometry.
+#[test]
+fn obstacle_geometry_reaches_batch_and_motion_checks() {
+    let (mut robot, tree, q) = (arm(), scatter_map(), rows(60, 17));
+    let extents = ObstacleGeometry::PointExtents;
+    let mut query = new_query();
+    let cubes = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default()).unwrap();
+    let request = BatchRequest { obstacle_geometry: extents, ..Default::default() };
+    let boxes = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &request).unwrap();
+    assert!(cubes.collided.iter().zip(&boxes.collided).all(|(c, b)| *c || !*b));
+    let mut reference = new_query();
+    for (i, row) in q.chunks(JOINTS).enumerate() {
+        robot.set_joint_positions(row, None).unwrap();
+        let single = CollisionRequest { max_contacts: 0, obstacle_geometry: extents, ..Default::default() };
+        assert_eq!(boxes.collided[i], reference.collide(&tree, &robot, &single).unwrap().collided);
+    }
+    let motion = MotionRequest { resolution: 0.05, obstacle_geometry: extents, ..Default::default() };
+    let (start, goal) = (&q[..JOINTS], &q[JOINTS..2 * JOINTS]);
+    let one = query.check_motion(&tree, &robot, start, goal, None, &motion).unwrap();
+    let many = query.check_motions(&tree, &robot, start, goal, BasePoses::Origin, &motion).unwrap();
+    assert_eq!((many.collided[0], many.first_fractions[0]), (one.collided, one.first_collision_fraction));
 }

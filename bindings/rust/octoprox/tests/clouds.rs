@@ -1,7 +1,6 @@
 //! read_point_cloud: small PCD (ascii, LZF binary_compressed) and PLY
 //! files written here, the shared RGB-D frame when present, and errors.
-use octoprox::consts::*;
-use octoprox::read_point_cloud;
+use octoprox::{read_point_cloud, CloudEncoding, CloudFormat, ErrorKind};
 use std::path::PathBuf;
 
 fn write(name: &str, bytes: &[u8]) -> PathBuf {
@@ -19,7 +18,7 @@ fn an_organized_ascii_pcd_with_its_viewpoint() {
     let text = format!("{}WIDTH 2\nHEIGHT 2\nVIEWPOINT 1 2 3 0 1 0 0\nDATA ascii\n1 2 3\n4 5 6\nnan nan nan\n7 8 9\n", XYZ);
     let cloud = read_point_cloud(write("grid.pcd", text.as_bytes())).unwrap();
     assert_eq!((cloud.info.width, cloud.info.height, cloud.info.finite_count), (2, 2, 3));
-    assert_eq!(cloud.info.format, OPX_CLOUD_FORMAT_PCD);
+    assert_eq!(cloud.info.format, CloudFormat::Pcd);
     assert_eq!(cloud.points[3], [7.0, 8.0, 9.0]);
     assert!(cloud.points[2][0].is_nan());
     let viewpoint = cloud.viewpoint().unwrap();
@@ -37,7 +36,7 @@ fn a_compressed_pcd_of_one_literal_run() {
     file.push(fields.len() as u8 - 1);
     file.extend_from_slice(&fields);
     let cloud = read_point_cloud(write("lzf.pcd", &file)).unwrap();
-    assert_eq!(cloud.info.encoding, OPX_CLOUD_ENCODING_BINARY_COMPRESSED);
+    assert_eq!(cloud.info.encoding, CloudEncoding::BinaryCompressed);
     assert_eq!(cloud.points, vec![[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
     assert!(cloud.viewpoint().is_none());
 }
@@ -46,18 +45,18 @@ fn a_compressed_pcd_of_one_literal_run() {
 fn ply_vertices() {
     let text = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 1 2\n3 4 5\n";
     let cloud = read_point_cloud(write("v.ply", text.as_bytes())).unwrap();
-    assert_eq!(cloud.info.format, OPX_CLOUD_FORMAT_PLY);
+    assert_eq!(cloud.info.format, CloudFormat::Ply);
     assert_eq!(cloud.points, vec![[0.0, 1.0, 2.0], [3.0, 4.0, 5.0]]);
 }
 
 #[test]
 fn bad_files_are_errors_naming_the_file() {
     let missing = read_point_cloud("/nonexistent/frame.pcd").unwrap_err();
-    assert_eq!(missing.status(), OPX_ERROR_IO);
+    assert_eq!(missing.kind(), ErrorKind::Io);
     assert!(missing.message().contains("/nonexistent/frame.pcd"));
     let cut = format!("{}WIDTH 3\nDATA ascii\n1 2 3\n", XYZ);
     let error = read_point_cloud(write("cut.pcd", cut.as_bytes())).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_CORRUPT);
+    assert_eq!(error.kind(), ErrorKind::Corrupt);
     assert!(error.message().contains("opx_point_cloud_read_file"));
 }
 

@@ -3,8 +3,7 @@
 //! agree, strided rows are read, and bad images are refused.
 mod common;
 use common::*;
-use octoprox::consts::*;
-use octoprox::{camera_intrinsics, DepthImage, Octree};
+use octoprox::{camera_intrinsics, CellClass, CellClasses, DepthImage, ErrorKind, InsertMode, Octree};
 
 /// Millimetres, row after row; 0 is no return.
 const MM: [u16; 12] = [2000, 0, 2000, 1000, 2000, 2000, 0, 3000, 0, 2000, 0, 0];
@@ -23,11 +22,11 @@ fn metres() -> Vec<f32> {
 }
 
 fn all_leaves(tree: &Octree) -> Vec<octoprox::Leaf> {
-    tree.leaves(OPX_MASK_ALL_KNOWN).unwrap()
+    tree.leaves(CellClasses::ALL_KNOWN).unwrap()
 }
 
 fn insert(image: &DepthImage<'_>) -> Octree {
-    let options = sensor_at(C0, C0, C0, OPX_INSERT_RAYCAST);
+    let options = sensor_at(C0, C0, C0, InsertMode::Raycast);
     let mut reference = new_tree(RES);
     let expected = reference.insert_points(&POINTS, &options).unwrap();
     let mut tree = new_tree(RES);
@@ -44,7 +43,7 @@ fn the_tiny_frame_gives_the_map_of_its_points() {
     let tree = insert(&DepthImage::from_u16(&MM, 4, 3, 0, 1000.0).unwrap());
     for [x, y, z] in POINTS {
         let cell = tree.classify([C0 + x, C0 + y, C0 + z]).unwrap();
-        assert_eq!(cell.cell_class, OPX_CELL_OCCUPIED);
+        assert_eq!(cell.cell_class, CellClass::Occupied);
     }
 }
 
@@ -72,13 +71,13 @@ fn strided_rows_are_read_in_place() {
 #[test]
 fn bad_images_are_refused() {
     let short = DepthImage::from_u16(&MM[..11], 4, 3, 0, 1000.0).unwrap_err();
-    assert_eq!(short.status(), OPX_ERROR_INVALID_ARGUMENT);
+    assert_eq!(short.kind(), ErrorKind::InvalidArgument);
     assert!(short.message().contains("do not fit"), "{}", short.message());
     assert!(DepthImage::from_u16(&MM, 4, 3, 3, 1000.0).is_err()); // stride < width
     assert!(DepthImage::from_u16(&MM, 2, usize::MAX, usize::MAX / 2, 1000.0).is_err());
     assert!(DepthImage::from_f32(&[], 0, 5, 0).is_ok()); // empty
     let mut tree = new_tree(RES);
-    let options = sensor_at(C0, C0, C0, OPX_INSERT_RAYCAST);
+    let options = sensor_at(C0, C0, C0, InsertMode::Raycast);
     let image = DepthImage::from_u16(&MM, 4, 3, 0, 1000.0).unwrap();
     let error = tree.insert_depth_image(&image, &camera_intrinsics(0.0, 4.0, 1.5, 1.0), &options)
         .unwrap_err();

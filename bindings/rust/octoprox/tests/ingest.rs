@@ -2,8 +2,7 @@
 //! and files (the scenarios of tests/c/test_octree_insert.c and _io.c).
 mod common;
 use common::*;
-use octoprox::consts::*;
-use octoprox::{Octree, OctreeOptions, Points};
+use octoprox::{CellClass, CellClasses, InsertMode, MapFormat, Octree, OctreeOptions, Points};
 
 /// Two rays from (C0, C0, C0) to (1, 0, 0) and (0, 1, 0), sensor frame:
 /// 2 occupied and 7 free cells, whatever the layout of the points.
@@ -12,15 +11,15 @@ fn assert_sample_map(tree: &Octree) {
     assert_eq!(stats.leaves_occupied, 2);
     assert_eq!(stats.leaves_free, 7);
     let hit = tree.classify([1.0 + C0, C0, C0]).unwrap();
-    assert_eq!(hit.cell_class, OPX_CELL_OCCUPIED);
+    assert_eq!(hit.cell_class, CellClass::Occupied);
     assert!((hit.probability - 0.7).abs() < 1e-4);
-    assert_eq!(tree.classify([0.5 + C0, C0, C0]).unwrap().cell_class, OPX_CELL_FREE);
-    assert_eq!(tree.classify([-3.0, -3.0, -3.0]).unwrap().cell_class, OPX_CELL_UNKNOWN);
+    assert_eq!(tree.classify([0.5 + C0, C0, C0]).unwrap().cell_class, CellClass::Free);
+    assert_eq!(tree.classify([-3.0, -3.0, -3.0]).unwrap().cell_class, CellClass::Unknown);
 }
 
 fn insert(points: Points<'_>) -> Octree {
     let mut tree = new_tree(RES);
-    let report = tree.insert_points(points, &sensor_at(C0, C0, C0, OPX_INSERT_RAYCAST)).unwrap();
+    let report = tree.insert_points(points, &sensor_at(C0, C0, C0, InsertMode::Raycast)).unwrap();
     assert_eq!((report.points_used, report.cells_hit, report.cells_missed), (2, 2, 7));
     tree
 }
@@ -61,16 +60,19 @@ fn pointcloud2_buffer_with_point_step() {
 #[test]
 fn leaves_and_memory_round_trip() {
     let tree = insert((&[[1.0f64, 0.0, 0.0], [0.0, 1.0, 0.0]]).into());
-    let occupied = tree.leaves(OPX_MASK_OCCUPIED).unwrap();
+    let occupied = tree.leaves(CellClass::Occupied).unwrap();
     assert_eq!(occupied.len(), 2);
-    assert!(occupied.iter().all(|leaf| leaf.cell_class == OPX_CELL_OCCUPIED));
-    assert_eq!(tree.leaves(OPX_MASK_ALL_KNOWN).unwrap().len(), 9);
-    let bytes = tree.save_memory(OPX_FORMAT_OT).unwrap();
+    assert!(occupied.iter().all(|leaf| leaf.cell_class == CellClass::Occupied));
+    assert_eq!(tree.leaves(CellClasses::ALL_KNOWN).unwrap().len(), 9);
+    assert_eq!(tree.leaves([CellClass::Free, CellClass::Occupied]).unwrap().len(), 9);
+    assert_eq!(tree.leaves(CellClass::Free | CellClass::Uncertain).unwrap().len(), 7);
+    assert!(tree.leaves(CellClass::Unknown).is_err()); // unknown space has no leaves
+    let bytes = tree.save_memory(MapFormat::Ot).unwrap();
     let loaded = Octree::load_memory(&bytes, &OctreeOptions::default()).unwrap();
     assert_eq!(loaded.options().unwrap().resolution, RES);
     assert_sample_map(&loaded);
     let path = std::env::temp_dir().join(format!("opx_rust_{}.bt", std::process::id()));
-    tree.save_file(&path, OPX_FORMAT_AUTO).unwrap();
+    tree.save_file(&path, MapFormat::Auto).unwrap();
     let from_file = Octree::load_file(&path, &OctreeOptions::default()).unwrap();
     std::fs::remove_file(&path).unwrap();
     assert_eq!(from_file.stats().unwrap().leaves_occupied, 2);

@@ -2,9 +2,8 @@
 //! (tests/c/test_query_collide.c, _distance.c, _cost.c, _path.c).
 mod common;
 use common::*;
-use octoprox::consts::*;
-use octoprox::{pose_at, CollisionRequest, DistanceRequest, LinkSet, PathRequest, Query,
-               QueryOptions, Shape, ShapeKind};
+use octoprox::{pose_at, CellClass, CollisionRequest, DistanceRequest, Engine, InsertMode, LinkSet,
+               PathRequest, Query, QueryOptions, Shape, ShapeKind, UnknownPolicy};
 
 fn new_query() -> Query {
     Query::new(&QueryOptions::default()).unwrap()
@@ -17,14 +16,14 @@ fn a_touching_sphere_collides_and_reports_the_cell() {
     let links = sphere_at(0.1, 0.35, C0, C0);
     let mut query = new_query();
     let result = query.collide(&tree, &links, &CollisionRequest::default()).unwrap();
-    assert_eq!((result.collided, result.contact_count), (1, 1));
+    assert_eq!((result.collided, result.contact_count), (true, 1));
     let contacts = query.contacts().unwrap();
     assert_eq!(contacts.len(), 1);
     assert_eq!((contacts[0].link, contacts[0].shape), (0, 0));
     assert_eq!(contacts[0].cell_center, [C0, C0, C0]);
-    assert_eq!(contacts[0].cell_class, OPX_CELL_OCCUPIED);
+    assert_eq!(contacts[0].cell_class, CellClass::Occupied);
     let apart = sphere_at(0.1, 0.5, C0, C0);
-    assert_eq!(query.collide(&tree, &apart, &CollisionRequest::default()).unwrap().collided, 0);
+    assert!(!query.collide(&tree, &apart, &CollisionRequest::default()).unwrap().collided);
     assert!(query.contacts().unwrap().is_empty());
 }
 
@@ -33,10 +32,10 @@ fn unknown_space_is_an_obstacle_when_asked() {
     let tree = one_cell_map();
     let links = sphere_at(0.1, 2.0, 2.0, 2.0);
     let mut query = new_query();
-    let request = CollisionRequest { unknown_policy: OPX_UNKNOWN_OCCUPIED, ..Default::default() };
+    let request = CollisionRequest { unknown_policy: UnknownPolicy::Occupied, ..Default::default() };
     let result = query.collide(&tree, &links, &request).unwrap();
-    assert_eq!(result.collided, 1);
-    assert_eq!(query.contact(0).unwrap().cell_class, OPX_CELL_UNKNOWN);
+    assert!(result.collided);
+    assert_eq!(query.contact(0).unwrap().cell_class, CellClass::Unknown);
 }
 
 #[test]
@@ -44,10 +43,10 @@ fn padding_and_penetration() {
     let tree = one_cell_map();
     let mut links = sphere_at(0.1, 0.4, C0, C0); // 0.05 m from the cell
     let mut query = new_query();
-    let request = CollisionRequest { compute_penetration: 1, ..Default::default() };
-    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 0);
+    let request = CollisionRequest { compute_penetration: true, ..Default::default() };
+    assert!(!query.collide(&tree, &links, &request).unwrap().collided);
     links.set_padding(0.08).unwrap();
-    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 1);
+    assert!(query.collide(&tree, &links, &request).unwrap().collided);
     let contact = query.contact(0).unwrap();
     assert!((contact.depth - 0.03).abs() < 1e-6, "depth {}", contact.depth);
     assert!((contact.normal[0] + 1.0).abs() < 1e-6, "normal {:?}", contact.normal);
@@ -63,9 +62,9 @@ fn distance_with_witnesses_and_per_link() {
     links.add_shape(beside, &Shape::cuboid([0.1, 0.1, 0.1])).unwrap();
     links.set_poses(&[pose_at(C0, C0, 1.0), pose_at(C0, 1.0, C0)]).unwrap();
     let mut query = new_query();
-    let request = DistanceRequest { per_link: 1, ..Default::default() };
+    let request = DistanceRequest { per_link: true, ..Default::default() };
     let result = query.distance(&tree, &links, &request).unwrap();
-    assert_eq!((result.found, result.collided, result.link), (1, 0, above));
+    assert_eq!((result.found, result.collided, result.link), (true, false, above));
     assert!((result.distance - 0.65).abs() < 1e-9);
     assert!((result.point_on_cell[2] - 0.25).abs() < 1e-9);
     let per_link = query.link_distances().unwrap();
@@ -121,24 +120,24 @@ fn every_shape_kind_is_accepted() {
 #[test]
 fn cost_of_unknown_space_behind_an_obstacle() {
     let mut tree = new_tree(RES);
-    tree.insert_points(&[[1.0f64, 0.0, 0.0]], &sensor_at(C0, C0, C0, OPX_INSERT_RAYCAST))
+    tree.insert_points(&[[1.0f64, 0.0, 0.0]], &sensor_at(C0, C0, C0, InsertMode::Raycast))
         .unwrap();
     let mut links = LinkSet::new().unwrap();
     let bar = links.add_link("bar").unwrap();
     links.add_shape(bar, &Shape::cuboid([1.325, 0.15, 0.15])).unwrap();
     links.set_poses(&[pose_at(1.2125, C0, C0)]).unwrap();
     let request = CollisionRequest {
-        compute_cost: 1,
+        compute_cost: true,
         region_max: [2.0, RES, RES],
         ..Default::default()
     };
     let mut query = new_query();
     let result = query.collide(&tree, &links, &request).unwrap();
     let (small, large) = (0.5 * 0.25 * 0.0225, 0.5 * 0.375 * 0.0225);
-    assert_eq!((result.collided, result.cost_box_count, result.cost_boxes_found), (1, 2, 2));
+    assert_eq!((result.collided, result.cost_box_count, result.cost_boxes_found), (true, 2, 2));
     assert!((result.total_cost - (small + large)).abs() < 1e-9);
     let boxes = query.cost_boxes().unwrap();
-    assert_eq!(boxes[0].cell_class, OPX_CELL_UNKNOWN);
+    assert_eq!(boxes[0].cell_class, CellClass::Unknown);
     assert!((boxes[0].cost - large).abs() < 1e-9);
     assert!((boxes[1].cost - small).abs() < 1e-9);
     assert!((boxes[0].max[0] - 1.875).abs() < 1e-9);
@@ -151,30 +150,30 @@ fn a_path_reports_its_first_colliding_waypoint() {
     // The sphere moves in along x: 1.0, 0.6, 0.3 (touching), 0.2.
     let poses: Vec<_> = [1.0, 0.6, 0.3, 0.2].iter().map(|&x| pose_at(x, C0, C0)).collect();
     let mut query = new_query();
-    let request = PathRequest { compute_distance: 1, ..Default::default() };
+    let request = PathRequest { compute_distance: true, ..Default::default() };
     let result = query.path(&tree, &links, &poses, &request).unwrap();
-    assert_eq!((result.collided, result.first_colliding_waypoint), (1, 2));
-    assert_eq!(result.min_distance_waypoint, 2);
+    assert_eq!((result.collided, result.first_colliding_waypoint), (true, Some(2)));
+    assert_eq!(result.min_distance_waypoint, Some(2));
     assert_eq!(links.pose(0).unwrap().position[0], 2.0); // not moved
     let free = query.path(&tree, &links, &poses[..2], &PathRequest::default()).unwrap();
-    assert_eq!((free.collided, free.first_colliding_waypoint), (0, -1));
+    assert_eq!((free.collided, free.first_colliding_waypoint), (false, None));
 }
 
 #[test]
 fn the_amortized_engine_gives_the_direct_answers() {
     let tree = one_cell_map();
     let links = sphere_at(0.1, C0, C0, 1.0);
-    let options = QueryOptions { engine: OPX_ENGINE_AMORTIZED, ..Default::default() };
+    let options = QueryOptions { engine: Engine::Amortized, ..Default::default() };
     let mut amortized = Query::new(&options).unwrap();
     let result = amortized.distance(&tree, &links, &DistanceRequest::default()).unwrap();
     assert!((result.distance - 0.65).abs() < 1e-9);
     let stats = amortized.stats().unwrap();
-    assert_eq!((stats.engine, stats.builds, stats.boxes), (OPX_ENGINE_AMORTIZED, 1, 1));
+    assert_eq!((stats.engine, stats.builds, stats.boxes), (Engine::Amortized, 1, 1));
 }
 
 #[test]
 fn caller_boxes_answer_like_the_cell_they_copy() {
-    let options = QueryOptions { engine: OPX_ENGINE_AMORTIZED, ..Default::default() };
+    let options = QueryOptions { engine: Engine::Amortized, ..Default::default() };
     let mut query = Query::new(&options).unwrap();
     query.bind_boxes(&[[0.0, 0.0, 0.0, RES, RES, RES], [5.0, 5.0, 5.0, 6.0, 6.0, 6.0]]).unwrap();
     let far = sphere_at(0.1, C0, C0, 1.0);
@@ -184,7 +183,7 @@ fn caller_boxes_answer_like_the_cell_they_copy() {
     assert_eq!(result.cell_center, [C0, C0, C0]);
     let touching = sphere_at(0.1, 0.35, C0, C0);
     let hit = query.collide_boxes(&touching, &CollisionRequest::default()).unwrap();
-    assert_eq!((hit.collided, query.contacts().unwrap().len()), (1, 1));
+    assert_eq!((hit.collided, query.contacts().unwrap().len()), (true, 1));
     // A direct context refuses boxes; NaN is refused.
     assert!(new_query().bind_boxes(&[[0.0; 6]]).is_err());
     assert!(query.bind_boxes(&[[0.0, 0.0, 0.0, 1.0, f64::NAN, 1.0]]).is_err());

@@ -1,9 +1,8 @@
 //! Self-collision: the scenarios of tests/c/test_self_collision.c and the
 //! Python test_self_collision.py (two cubes 1 cm apart, padding, a disabled
 //! pair, contacts, signed distance, an SRDF's pair, pair sampling, errors).
-use octoprox::consts::*;
-use octoprox::{pose_at, LinkSet, PairSamplingOptions, Query, QueryOptions, SelfCollisionRequest,
-               SelfDistanceRequest, Shape, UrdfOptions};
+use octoprox::{pose_at, ErrorKind, LinkSet, PairSamplingOptions, Query, QueryOptions,
+               SelfCollisionRequest, SelfDistanceRequest, Shape, UrdfOptions};
 use std::io::Write;
 
 const ARM: &str = r#"<robot name="arm">
@@ -37,18 +36,18 @@ fn links_one_centimetre_apart() {
     let mut links = two_cubes(0.01);
     let mut query = new_query();
     let yes_no = SelfCollisionRequest::default();
-    assert_eq!(query.self_collide(&links, &yes_no).unwrap().collided, 0);
+    assert!(!query.self_collide(&links, &yes_no).unwrap().collided);
     let d = query.self_distance(&links, &SelfDistanceRequest::default()).unwrap();
-    assert_eq!((d.found, d.link_a, d.link_b), (1, 0, 1));
+    assert_eq!((d.found, d.link_a, d.link_b), (true, 0, 1));
     assert!((d.distance - 0.01).abs() < 1e-12);
     assert!((d.point_on_a[0] - 0.05).abs() < 1e-12 && (d.point_on_b[0] - 0.06).abs() < 1e-12);
     links.set_padding(0.005).unwrap();
-    assert_eq!(query.self_collide(&links, &yes_no).unwrap().collided, 1);
+    assert!(query.self_collide(&links, &yes_no).unwrap().collided);
     links.set_pair_enabled(1, 0, false).unwrap();
     assert!(!links.pair_enabled(0, 1).unwrap());
-    assert_eq!(query.self_collide(&links, &yes_no).unwrap().collided, 0);
+    assert!(!query.self_collide(&links, &yes_no).unwrap().collided);
     let none = query.self_distance(&links, &SelfDistanceRequest::default()).unwrap();
-    assert_eq!(none.found, 0);
+    assert!(!none.found);
     assert!(none.distance.is_infinite());
 }
 
@@ -56,18 +55,14 @@ fn links_one_centimetre_apart() {
 fn contacts_carry_both_links_and_the_depth() {
     let links = two_cubes(-0.02);
     let mut query = new_query();
-    let all = SelfCollisionRequest {
-        max_contacts: u32::MAX,
-        compute_penetration: 1,
-        ..Default::default()
-    };
+    let all = SelfCollisionRequest { max_contacts: u32::MAX, compute_penetration: true };
     let result = query.self_collide(&links, &all).unwrap();
-    assert_eq!((result.collided, result.contact_count, result.truncated), (1, 1, 0));
+    assert_eq!((result.collided, result.contact_count, result.truncated), (true, 1, false));
     let contacts = query.self_contacts().unwrap();
     let c = contacts[0];
     assert_eq!((c.link_a, c.shape_a, c.link_b, c.shape_b), (0, 0, 1, 0));
     assert!((c.depth - 0.02).abs() < 1e-12 && (c.normal[0] - 1.0).abs() < 1e-12);
-    let signed = SelfDistanceRequest { signed_distance: 1, ..Default::default() };
+    let signed = SelfDistanceRequest { signed_distance: true, ..Default::default() };
     assert!((query.self_distance(&links, &signed).unwrap().distance + 0.02).abs() < 1e-12);
 }
 
@@ -85,7 +80,7 @@ fn srdf_pairs_start_disabled_and_sampling_disables_more() {
     assert!(!robot.pair_enabled(0, 1).unwrap());
     assert!(robot.pair_enabled(1, 2).unwrap());
     let mut query = new_query();
-    assert_eq!(query.self_collide(&robot, &SelfCollisionRequest::default()).unwrap().collided, 0);
+    assert!(!query.self_collide(&robot, &SelfCollisionRequest::default()).unwrap().collided);
     // The hand (z >= 0.45) never meets the base (z <= 0.2) nor the arm (z <= 0.25).
     let sampling = PairSamplingOptions { samples: 200, ..Default::default() };
     let result = robot.disable_never_colliding_pairs(&sampling).unwrap();
@@ -97,12 +92,12 @@ fn srdf_pairs_start_disabled_and_sampling_disables_more() {
 fn bad_arguments_name_the_function_and_the_argument() {
     let mut links = two_cubes(0.01);
     let error = links.set_pair_enabled(0, 5, false).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_INVALID_ARGUMENT);
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument);
     assert!(error.message().contains("opx_linkset_set_pair_enabled: b: link 5"), "{}", error);
     assert!(links.pair_enabled(1, 1).is_err());
     let cutoff = SelfDistanceRequest { cutoff: -1.0, ..Default::default() };
     let error = new_query().self_distance(&links, &cutoff).unwrap_err();
     assert!(error.message().contains("opx_query_self_distance: request->cutoff"), "{}", error);
     let error = links.disable_never_colliding_pairs(&PairSamplingOptions::default()).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_UNSUPPORTED);
+    assert_eq!(error.kind(), ErrorKind::Unsupported);
 }

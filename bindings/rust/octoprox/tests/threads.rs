@@ -29,7 +29,7 @@ fn queries_from_several_threads_on_one_octree() {
             .map(|_| {
                 scope.spawn(move || {
                     let mut query = Query::new(&QueryOptions::default()).unwrap();
-                    let request = DistanceRequest { per_link: 1, ..Default::default() };
+                    let request = DistanceRequest { per_link: true, ..Default::default() };
                     let mut answers = Vec::new();
                     for _ in 0..50 {
                         let near = query.distance(tree, links, &request).unwrap();
@@ -44,7 +44,7 @@ fn queries_from_several_threads_on_one_octree() {
         for worker in workers {
             for (distance, collided) in worker.join().unwrap() {
                 assert!((distance - 0.1).abs() < 1e-9, "distance {}", distance);
-                assert_eq!(collided, 0);
+                assert!(!collided);
             }
         }
     });

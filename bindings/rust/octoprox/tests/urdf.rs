@@ -2,8 +2,8 @@
 //! options, errors, and a collision check at a pose set by FK.
 mod common;
 use common::*;
-use octoprox::consts::*;
-use octoprox::{pose_at, CollisionRequest, LinkSet, Query, QueryOptions, UrdfOptions};
+use octoprox::{pose_at, CollisionRequest, ErrorKind, JointType, LinkSet, Query, QueryOptions,
+               UrdfOptions};
 use std::f64::consts::FRAC_PI_2;
 
 /// base --shoulder (revolute z, 0.2 up)--> arm --slide (prismatic x, 0.5
@@ -37,13 +37,13 @@ fn links_shapes_and_joints_come_from_the_urdf() {
     assert_eq!(links.shape_count(0).unwrap(), 1);
     assert_eq!(links.joint_count().unwrap(), 2);
     let shoulder = links.joint_info(links.find_joint("shoulder").unwrap()).unwrap();
-    assert_eq!((shoulder.name.as_str(), shoulder.joint_type), ("shoulder", OPX_JOINT_REVOLUTE));
+    assert_eq!((shoulder.name.as_str(), shoulder.joint_type), ("shoulder", JointType::Revolute));
     assert_eq!((shoulder.parent_link, shoulder.child_link), (Some(0), Some(1)));
     assert_eq!((shoulder.axis, shoulder.limits), ([0.0, 0.0, 1.0], Some((-1.5, 1.5))));
     assert_eq!(shoulder.origin.position, [0.0, 0.0, 0.2]);
     assert_eq!(shoulder.mimic, None);
     let slide = links.joint_info(1).unwrap();
-    assert_eq!((slide.joint_type, slide.velocity, slide.effort), (OPX_JOINT_PRISMATIC, 2.0, 5.0));
+    assert_eq!((slide.joint_type, slide.velocity, slide.effort), (JointType::Prismatic, 2.0, 5.0));
     assert!(links.disabled_pairs().unwrap().is_empty());
     assert_position(&links, 2, [0.5, 0.0, 0.2]); // every joint at 0
 }
@@ -70,9 +70,9 @@ fn a_check_after_fk() {
     let mut query = Query::new(&QueryOptions::default()).unwrap();
     let request = CollisionRequest { max_contacts: 10, ..Default::default() };
     links.set_joint_positions(&[0.0, 0.0], Some(&pose_at(2.0, 2.0, 0.0))).unwrap();
-    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 0);
+    assert!(!query.collide(&tree, &links, &request).unwrap().collided);
     links.set_joint_positions(&[0.0, 0.0], Some(&pose_at(-0.5 + C0, C0, -0.2 + C0))).unwrap();
-    assert_eq!(query.collide(&tree, &links, &request).unwrap().collided, 1);
+    assert!(query.collide(&tree, &links, &request).unwrap().collided);
     let finger = links.find_link("finger").unwrap();
     assert!(query.contacts().unwrap().iter().any(|c| c.link == finger));
 }
@@ -81,20 +81,20 @@ fn a_check_after_fk() {
 fn urdf_errors() {
     let options = UrdfOptions::default();
     let error = LinkSet::from_urdf_file("/nonexistent/robot.urdf", &options).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_IO);
+    assert_eq!(error.kind(), ErrorKind::Io);
     assert!(error.message().contains("/nonexistent/robot.urdf"), "{}", error);
     let error = LinkSet::from_urdf_string("<robot name=", &options).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_CORRUPT);
+    assert_eq!(error.kind(), ErrorKind::Corrupt);
     let mut links = arm();
     let error = links.set_joint_positions(&[0.0], None).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_INVALID_ARGUMENT);
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument);
     let error = links.set_named_joint_positions(&[("elbow", 1.0)], None).unwrap_err();
     assert!(error.message().contains("elbow"), "{}", error);
     assert!(links.find_joint("elbow").is_err());
     let mut by_hand = sphere_at(0.1, 0.0, 0.0, 0.0);
     assert_eq!(by_hand.joint_count().unwrap(), 0);
     let error = by_hand.set_joint_positions(&[], None).unwrap_err();
-    assert_eq!(error.status(), OPX_ERROR_UNSUPPORTED);
+    assert_eq!(error.kind(), ErrorKind::Unsupported);
     let bad = UrdfOptions { package_dirs: vec!["a\0b".into()], ..Default::default() };
     assert!(LinkSet::from_urdf_string(ARM, &bad).is_err());
 }

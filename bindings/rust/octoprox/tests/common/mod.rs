@@ -2,8 +2,7 @@
 //! (tests/c/opx_test.h): 25 cm cells, the sensor at the centre C0 of the
 //! cell [0, RES)^3.
 #![allow(dead_code)]
-use octoprox::consts::*;
-use octoprox::{pose_at, InsertOptions, LinkSet, Octree, OctreeOptions, Shape};
+use octoprox::{pose_at, InsertMode, InsertOptions, LinkSet, Octree, OctreeOptions, Shape};
 
 pub const RES: f64 = 0.25;
 pub const C0: f64 = 0.125;
@@ -12,7 +11,7 @@ pub fn new_tree(resolution: f64) -> Octree {
     Octree::new(&OctreeOptions { resolution, ..Default::default() }).unwrap()
 }
 
-pub fn sensor_at(x: f64, y: f64, z: f64, mode: i32) -> InsertOptions {
+pub fn sensor_at(x: f64, y: f64, z: f64, mode: InsertMode) -> InsertOptions {
     InsertOptions { mode, sensor_pose: pose_at(x, y, z), ..Default::default() }
 }
 
@@ -20,7 +19,7 @@ pub fn sensor_at(x: f64, y: f64, z: f64, mode: i32) -> InsertOptions {
 pub fn one_cell_map() -> Octree {
     let mut tree = new_tree(RES);
     let point = [[C0, C0, C0]];
-    tree.insert_points(&point, &sensor_at(0.0, 0.0, 0.0, OPX_INSERT_ENDPOINTS)).unwrap();
+    tree.insert_points(&point, &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
     assert_eq!(tree.stats().unwrap().leaves_occupied, 1);
     tree
 }
