@@ -8,6 +8,7 @@
 #include "robot.h"
 #include "query.h"
 #include "self_collision.h"
+#include "world.h"
 #include "batch.h"
 #include "io.h"
 

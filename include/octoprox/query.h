@@ -163,10 +163,14 @@ typedef struct opx_contact {
     double depth;
     double normal[3];
     double position[3];
+    /** The world object touched (world.h: its index), or -1 for an octree
+     * cell.  For an object the cell fields above are zeros. */
+    int32_t object;
+    uint32_t object_shape;  /**< the object's shape touched (0 for a cell) */
 } opx_contact;
 
 #define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, \
-    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, -1, 0}
 OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size);
 
 /** A box of uncertain or unknown space overlapped by a link. */
@@ -255,10 +259,14 @@ typedef struct opx_distance_result {
     double cell_size;
     double cell_probability; /**< 0.5 for unknown cells */
     uint64_t narrow_tests;  /**< exact shape-vs-cell distances computed */
+    /** The nearest world object (world.h: its index; point_on_cell then
+     * lies on it and the cell fields are zeros), or -1 for a cell. */
+    int32_t object;
+    uint32_t object_shape;  /**< the object's nearest shape (0 for a cell) */
 } opx_distance_result;
 
 #define OPX_DISTANCE_RESULT_INIT {sizeof(opx_distance_result), 0, 0, 0, 0, 0, 0.0, \
-    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0, 0.0, 0}
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0, 0.0, 0, -1, 0}
 OPX_API opx_status opx_distance_result_init(opx_distance_result *result, size_t size);
 
 /**

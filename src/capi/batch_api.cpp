@@ -1,6 +1,7 @@
 // C shims: many configurations and joint-space motions per call (batch.h).
 #include "capi/batch_inputs.hpp"
 #include "capi/checks.hpp"
+#include "capi/world_handle.hpp"
 #include "query/batch/configuration_batch.hpp"
 #include "query/batch/motion_check.hpp"
 
@@ -15,6 +16,7 @@ void require_handles(const opx_query *query, const opx_octree *tree, const opx_l
     require_pointer(query, "query");
     require_pointer(tree, "tree");
     require_pointer(links, "links");
+    refuse_world(query);
 }
 
 ConfigurationSettings configuration_settings(const opx_batch_request &r, const SensorOctree &tree) {

@@ -1,6 +1,7 @@
 // C shims: a caller's boxes as the map of an amortized context (a
 // "collision map" from another source, paper IV.A).
 #include "capi/checks.hpp"
+#include "capi/world_handle.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
 
@@ -73,6 +74,7 @@ OPX_API opx_status opx_query_collide_boxes(opx_query *query, const opx_linkset *
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_pointer(links, "links");
+        refuse_world(query);
         require_out_struct(out_result, "out_result");
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
@@ -88,6 +90,7 @@ OPX_API opx_status opx_query_distance_boxes(opx_query *query, const opx_linkset 
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_pointer(links, "links");
+        refuse_world(query);
         require_out_struct(out_result, "out_result");
         opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
         read_versioned(request, merged, "request");

@@ -2,6 +2,7 @@
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
+#include "capi/world_handle.hpp"
 #include "narrowphase/narrow_phase.hpp"
 
 using namespace octoprox;
@@ -38,6 +39,8 @@ opx_distance_result distance_result_to_abi(const DistanceAnswer &answer, double 
     }
     out.cell_size = answer.cell.size;
     out.cell_probability = answer.cell.probability;
+    out.object = answer.object;
+    out.object_shape = answer.object_shape;
     return out;
 }
 
@@ -57,14 +60,15 @@ OPX_API opx_status opx_query_distance(opx_query *query, const opx_octree *tree, 
                                       const opx_distance_request *request, opx_distance_result *out_result) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(tree, "tree");
+        const SensorOctree *map = map_of(query, tree);
         require_pointer(links, "links");
         require_out_struct(out_result, "out_result");
         opx_distance_request merged = OPX_DISTANCE_REQUEST_INIT;
         read_versioned(request, merged, "request");
-        const DistanceSettings settings = read_distance_request(merged, *tree->tree);
+        const DistanceSettings settings =
+            map != nullptr ? read_distance_request(merged, *map) : distance_settings_without_map(merged);
         const bool per_link = merged.per_link != 0;
-        const DistanceAnswer answer = query->context.distance(*tree->tree, links->links, settings, per_link);
+        const DistanceAnswer answer = query->context.distance(map, links->links, settings, per_link);
         write_versioned(out_result, distance_result_to_abi(answer, settings.cutoff), "out_result");
         return OPX_OK;
     });

@@ -1,5 +1,6 @@
 // C shims: path queries.
 #include "capi/checks.hpp"
+#include "capi/world_handle.hpp"
 #include "capi/handles.hpp"
 
 using namespace octoprox;
@@ -73,6 +74,7 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, cons
         require_pointer(query, "query");
         require_pointer(tree, "tree");
         require_pointer(links, "links");
+        refuse_world(query);
         require_out_struct(out_result, "out_result");
         opx_path_request merged = OPX_PATH_REQUEST_INIT;
         read_versioned(request, merged, "request");

@@ -2,6 +2,7 @@
 #include "capi/checks.hpp"
 #include "capi/handles.hpp"
 #include "capi/request_checks.hpp"
+#include "capi/world_handle.hpp"
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -51,7 +52,7 @@ opx_cost_box cost_box_to_abi(const CostBox &b, double resolution) {
 opx_collision_result collision_result_to_abi(const CollisionAnswer &answer, const QueryContext &context) {
     opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     result.collided = answer.outcome.collided ? 1 : 0;
-    result.contact_count = context.contacts().size();
+    result.contact_count = context.contacts().size() + context.world_contacts().size();
     result.truncated = answer.outcome.truncated ? 1 : 0;
     result.narrow_tests = answer.outcome.narrow_tests;
     result.total_cost = answer.cost.total;
@@ -85,7 +86,8 @@ int32_t engine_to_abi(EngineKind kind) {
 opx_contact contact_to_abi(const Contact &c) {
     return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
                        {c.center[0], c.center[1], c.center[2]}, c.size, c.probability, c.depth,
-                       {c.normal[0], c.normal[1], c.normal[2]}, {c.position[0], c.position[1], c.position[2]}};
+                       {c.normal[0], c.normal[1], c.normal[2]}, {c.position[0], c.position[1], c.position[2]},
+                       -1, 0};
 }
 
 }  // namespace
@@ -161,13 +163,14 @@ OPX_API opx_status opx_query_collide(opx_query *query, const opx_octree *tree, c
                                      opx_collision_result *out_result) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(tree, "tree");
+        const SensorOctree *map = map_of(query, tree);
         require_pointer(links, "links");
         require_out_struct(out_result, "out_result");
         opx_collision_request merged = OPX_COLLISION_REQUEST_INIT;
         read_versioned(request, merged, "request");
-        const CollisionSettings settings = collision_settings(merged, *tree->tree);
-        const CollisionAnswer answer = query->context.collide(*tree->tree, links->links, settings);
+        const CollisionSettings settings =
+            map != nullptr ? collision_settings(merged, *map) : collision_settings_without_map(merged);
+        const CollisionAnswer answer = query->context.collide(map, links->links, settings);
         write_versioned(out_result, collision_result_to_abi(answer, query->context), "out_result");
         return OPX_OK;
     });
@@ -177,10 +180,14 @@ OPX_API opx_status opx_query_get_contact(const opx_query *query, size_t index, o
     return guard(__func__, [&] {
         require_pointer(query, "query");
         require_out_struct(out_contact, "out_contact");
-        const std::vector<Contact> &contacts = query->context.contacts();
-        if (index >= contacts.size())
-            throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index, contacts.size()));
-        write_versioned(out_contact, contact_to_abi(contacts[index]), "out_contact");
+        const std::vector<Contact> &cells = query->context.contacts();
+        const std::vector<WorldContact> &objects = query->context.world_contacts();
+        if (index >= cells.size() + objects.size())
+            throw_invalid(format("index %zu is beyond the %zu contacts of the last query", index,
+                                 cells.size() + objects.size()));
+        const opx_contact contact = index < cells.size() ? contact_to_abi(cells[index])
+                                                         : world_contact_to_abi(objects[index - cells.size()]);
+        write_versioned(out_contact, contact, "out_contact");
         return OPX_OK;
     });
 }

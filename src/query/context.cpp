@@ -16,23 +16,30 @@ QueryContext::QueryContext(const ContextOptions &options) : kind_(options.engine
     }
 }
 
-CollisionAnswer QueryContext::collide(const SensorOctree &tree, const LinkSet &links,
+CollisionAnswer QueryContext::collide(const SensorOctree *tree, const LinkSet &links,
                                       const CollisionSettings &settings) {
-    resolution_ = tree.params().resolution;
     CollisionAnswer answer;
-    answer.outcome = engine_->collide(tree, links, settings, contacts_);
+    contacts_.clear();
     cost_boxes_.clear();
-    if (settings.cost) answer.cost = cost_.finish(links, engine_->cost(), settings.max_cost_boxes, cost_boxes_);
+    if (tree != nullptr) {
+        resolution_ = tree->params().resolution;
+        answer.outcome = engine_->collide(*tree, links, settings, contacts_);
+        if (settings.cost) answer.cost = cost_.finish(links, engine_->cost(), settings.max_cost_boxes, cost_boxes_);
+    }
+    collide_world(links, settings, answer);
     return answer;
 }
 
-DistanceAnswer QueryContext::distance(const SensorOctree &tree, const LinkSet &links,
+DistanceAnswer QueryContext::distance(const SensorOctree *tree, const LinkSet &links,
                                       const DistanceSettings &settings, bool per_link) {
     link_distances_.clear();
     DistanceAnswer answer;
-    answer.outcome = engine_->distance(tree, links, settings, per_link ? &link_distances_ : nullptr);
-    const DistanceOutcome &o = answer.outcome;
-    if (o.found) answer.cell = describe_cell(tree, o.cell, o.cell_unknown, o.cell_log_odds);
+    if (tree != nullptr) {
+        answer.outcome = engine_->distance(*tree, links, settings, per_link ? &link_distances_ : nullptr);
+        const DistanceOutcome &o = answer.outcome;
+        if (o.found) answer.cell = describe_cell(*tree, o.cell, o.cell_unknown, o.cell_log_odds);
+    }
+    distance_world(links, settings, per_link, answer);
     return answer;
 }
 
@@ -40,6 +47,7 @@ PathOutcome QueryContext::path(const SensorOctree &tree, const LinkSet &links, c
                                size_t waypoints, const PathSettings &settings) {
     resolution_ = tree.params().resolution;
     contacts_.clear();
+    world_contacts_.clear();
     return path_.run(PathRequest{tree, links, poses, waypoints, settings}, *engine_, cost_, cost_boxes_);
 }
 
@@ -64,6 +72,7 @@ CollisionAnswer QueryContext::collide_boxes(const LinkSet &links, const Collisio
     CollisionAnswer answer;
     answer.outcome = engine.collide_boxes(links, settings, contacts_);
     cost_boxes_.clear();
+    world_contacts_.clear();
     return answer;
 }
 

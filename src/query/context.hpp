@@ -10,6 +10,7 @@
 #include "query/cost_pipeline.hpp"
 #include "query/path_query.hpp"
 #include "query/self/self_collider.hpp"
+#include "query/world/world_collider.hpp"
 
 #include <memory>
 #include <vector>
@@ -34,6 +35,10 @@ struct CollisionAnswer {
 struct DistanceAnswer {
     DistanceOutcome outcome;
     CellSummary cell;  // when outcome.found
+    // A world object's shape when it is the nearest (outcome.on_cell lies
+    // on it; cell is then zeros); -1: a cell.
+    int32_t object = -1;
+    uint32_t object_shape = 0;
 };
 
 class QueryContext {
@@ -43,10 +48,24 @@ public:
     EngineKind engine_kind() const { return kind_; }
     EngineStats stats() const { return engine_->stats(); }
 
-    // Queries against an octree frame.
-    CollisionAnswer collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings);
-    DistanceAnswer distance(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings,
+    // Queries against an octree frame and the world's objects, when a
+    // world is set (query/world/: the same for both engines); tree may
+    // then be null.  World contacts follow the octree's, up to
+    // max_contacts together.
+    CollisionAnswer collide(const SensorOctree *tree, const LinkSet &links, const CollisionSettings &settings);
+    DistanceAnswer distance(const SensorOctree *tree, const LinkSet &links, const DistanceSettings &settings,
                             bool per_link);
+    CollisionAnswer collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings) {
+        return collide(&tree, links, settings);
+    }
+    DistanceAnswer distance(const SensorOctree &tree, const LinkSet &links, const DistanceSettings &settings,
+                            bool per_link) {
+        return distance(&tree, links, settings, per_link);
+    }
+    // The world collide() and distance() check besides the octree (null:
+    // none); it must outlive its use and not change during a query.
+    void set_world(const World *world) { world_ = world; }
+    const World *world() const { return world_; }
     // `poses`: waypoint-major, one pose per link (path_query.hpp).
     PathOutcome path(const SensorOctree &tree, const LinkSet &links, const std::vector<Pose> &poses,
                      size_t waypoints, const PathSettings &settings);
@@ -71,6 +90,7 @@ public:
 
     // The results of the last queries.
     const std::vector<Contact> &contacts() const { return contacts_; }
+    const std::vector<WorldContact> &world_contacts() const { return world_contacts_; }
     const std::vector<CostBox> &cost_boxes() const { return cost_boxes_; }
     const std::vector<double> &link_distances() const { return link_distances_; }
     // Of the octree of the last collision or path query (the cost boxes' cells).
@@ -79,6 +99,10 @@ public:
 private:
     AmortizedEngine &amortized_engine();
     AmortizedEngine &bound_boxes();
+    // context_world.cpp: the world's part of an answer.
+    void collide_world(const LinkSet &links, const CollisionSettings &settings, CollisionAnswer &answer);
+    void distance_world(const LinkSet &links, const DistanceSettings &settings, bool per_link,
+                        DistanceAnswer &answer);
 
     EngineKind kind_;
     std::unique_ptr<Engine> engine_;
@@ -91,6 +115,9 @@ private:
     SelfCollider self_;
     std::vector<SelfContact> self_contacts_;
     double resolution_ = 0.0;
+    const World *world_ = nullptr;
+    WorldCollider world_collider_;
+    std::vector<WorldContact> world_contacts_;
 };
 
 }  // namespace octoprox

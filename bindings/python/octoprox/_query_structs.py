@@ -64,11 +64,12 @@ class Contact(Struct):
     cell_center (map frame, m), cell_size, cell_probability (0.5 for
     unknown cells); with compute_penetration depth (m, >= 0), normal
     (moving the link by -depth * normal separates it) and position (map
-    frame)."""
+    frame); object and object_shape: the world object touched (its
+    index; its cell fields are then zeros), object -1 for a cell."""
     _fields_ = [("struct_size", c_uint32), ("link", c_uint32), ("shape", c_uint32),
                 ("cell_class", c_int32), ("cell_center", D3), ("cell_size", c_double),
                 ("cell_probability", c_double), ("depth", c_double), ("normal", D3),
-                ("position", D3)]
+                ("position", D3), ("object", c_int32), ("object_shape", c_uint32)]
 
 
 class CostBox(Struct):
@@ -102,12 +103,14 @@ class DistanceResult(Struct):
     cutoff), collided (distance <= 1e-9 m), cell_class, link and shape
     (the closest), distance (m, padding included; >= 0 unless signed),
     point_on_link and point_on_cell (witnesses, map frame), cell_center,
-    cell_size, cell_probability, narrow_tests."""
+    cell_size, cell_probability, narrow_tests; object and object_shape:
+    the nearest world object (point_on_cell lies on it), object -1 for a
+    cell."""
     _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
                 ("cell_class", c_int32), ("link", c_uint32), ("shape", c_uint32),
                 ("distance", c_double), ("point_on_link", D3), ("point_on_cell", D3),
                 ("cell_center", D3), ("cell_size", c_double), ("cell_probability", c_double),
-                ("narrow_tests", c_uint64)]
+                ("narrow_tests", c_uint64), ("object", c_int32), ("object_shape", c_uint32)]
 
 
 class SelfCollisionRequest(Struct):

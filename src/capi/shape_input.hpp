@@ -1,0 +1,25 @@
+// Shapes across the C ABI (opx_shape), shared by link sets and worlds:
+// a caller's shape read, versioned and checked, and a stored shape's ABI
+// view.
+#pragma once
+
+#include "robot/shape.hpp"
+
+#include <octoprox/linkset.h>
+
+namespace octoprox::capi {
+
+// Throws ApiError (invalid argument) naming `argument` unless value is a
+// positive finite length.
+void require_positive(double value, const char *argument);
+// Throws unless value is a finite length >= 0.
+void require_padding(double value, const char *argument);
+
+// The caller's shape checked (NULL, struct_size, sizes, vertices, indices)
+// and turned into a definition in the shape frame.
+ShapeDef read_shape(const opx_shape *shape);
+
+// The ABI view of a stored shape; vertices and indices point into def.
+opx_shape shape_to_abi(const ShapeDef &def);
+
+}  // namespace octoprox::capi
