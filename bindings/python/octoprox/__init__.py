@@ -9,7 +9,9 @@ liboctoprox; see the README and include/octoprox/ for the semantics).
 
 The objects: Octree (the map, in the map frame), LinkSet (the robot's
 links and shapes, from URDF or by hand), Query (one per thread: collide,
-distance, path, self_collide, check_configurations...).  Units are metres
+distance, path, self_collide, check_configurations...), World (known
+objects beside the map, from MoveIt planning scenes or by hand; the
+``world=`` keyword of Query.collide and Query.distance).  Units are metres
 and radians; poses are x y z qx qy qz qw (ROS order).  Named values are
 IntEnum classes (CellClass, Engine, UnknownPolicy, ObstacleGeometry, ...),
 also exported as constants (CELL_OCCUPIED, ENGINE_AMORTIZED, ...).
@@ -38,6 +40,7 @@ from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, J
                     JOINT_PRISMATIC, JOINT_REVOLUTE)
 from .query import (ALL_CONTACTS, ENGINE_AMORTIZED, ENGINE_DIRECT, OBSTACLE_CELLS,
                     OBSTACLE_POINT_EXTENTS, UNKNOWN_FREE, UNKNOWN_OCCUPIED, Query)
+from .world import World
 from . import io  # PCD and PLY files as numpy arrays: io.read_pcd, io.read_ply
 
 CELL_UNKNOWN, CELL_FREE, CELL_UNCERTAIN, CELL_OCCUPIED = CellClass
@@ -62,7 +65,7 @@ def status_name(status: int) -> str:
 __version__ = "%d.%d.%d" % HEADER_VERSION
 
 __all__ = [
-    "Octree", "LinkSet", "Query", "io", "version", "version_number", "status_name",
+    "Octree", "LinkSet", "Query", "World", "io", "version", "version_number", "status_name",
     "HEADER_VERSION", "lib",
     # named values
     "CellClass", "CellMask", "Engine", "FileFormat", "InsertMode", "JointType",

@@ -10,6 +10,7 @@ defaults; units are metres.
 from __future__ import annotations
 
 import ctypes
+from typing import Optional
 
 import numpy as np
 
@@ -26,6 +27,7 @@ from .batch import BatchQueries, _check_operands
 from .linkset import LinkSet
 from .octree import Octree
 from .self_collision import SelfCollisionQueries
+from .world import World, query_with_world
 
 ENGINE_DIRECT, ENGINE_AMORTIZED = Engine.DIRECT, Engine.AMORTIZED
 UNKNOWN_FREE, UNKNOWN_OCCUPIED = UnknownPolicy.FREE, UnknownPolicy.OCCUPIED
@@ -95,15 +97,15 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         lib.opx_query_get_stats(self, out)
         return out
 
-    def collide(self, tree: Octree, links: LinkSet, *,
+    def collide(self, tree: Optional[Octree], links: LinkSet, *,
                 unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                 occupancy_threshold: float = 0.0, max_contacts: int = 1,
                 compute_cost: bool = False, max_cost_boxes: int = 16,
                 unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
                 region_max: Vector3 = _ZERO3, compute_penetration: bool = False,
-                obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-                ) -> CollisionResult:
-        """Does the link set collide with the octree?
+                obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                world: Optional[World] = None) -> CollisionResult:
+        """Does the link set collide with the octree (and the world's objects)?
 
         unknown_policy: UnknownPolicy.FREE (never-observed space is free,
           as MoveIt and FCL) or OCCUPIED (a link must lie in observed space).
@@ -123,6 +125,8 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         obstacle_geometry: ObstacleGeometry.CELLS (an occupied cell is its
           cube) or POINT_EXTENTS (the box of its sensed points, where the
           map recorded one).
+        world: a World whose enabled objects are checked too (tree may then
+          be None); their contacts follow the cells', with object set.
 
         Returns a CollisionResult: collided (bool), contact_count,
         truncated, narrow_tests, total_cost, cost_box_count; contacts() and
@@ -139,6 +143,13 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         except ValueError:  # a numpy array among the values
             same = False
         request = cache.request if same else cache.lookup(key)
+        if world is not None or tree is None:
+            out = s.CollisionResult(_COLLISION_RESULT_SIZE)
+            self._map_result = None
+            query_with_world(self, tree, links, world, "Query.collide",
+                             lambda raw: _collide(self._raw, raw, links._raw, request, out))
+            self._map_result = out
+            return out
         if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
             _check_operands(tree, links, "Query.collide")
         out = s.CollisionResult(_COLLISION_RESULT_SIZE)
@@ -176,12 +187,12 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
             get(self, i, rows.ctypes.data + i * dtype.itemsize)
         return rows
 
-    def distance(self, tree: Octree, links: LinkSet, *,
+    def distance(self, tree: Optional[Octree], links: LinkSet, *,
                  unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                  occupancy_threshold: float = 0.0, abs_err: float = 0.0, rel_err: float = 0.0,
                  cutoff: float = 0.0, per_link: bool = False, signed_distance: bool = False,
-                 obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-                 ) -> DistanceResult:
+                 obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                 world: Optional[World] = None) -> DistanceResult:
         """The minimum distance between the enabled links (paddings
         included) and the obstacle cells, with witness points.
 
@@ -193,6 +204,9 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         per_link: also each link's minimum (link_distances()).
         signed_distance: overlapping links get minus their deepest
           penetration instead of 0.
+        world: a World whose enabled objects are measured too (tree may
+          then be None): the least of both; object names the nearest
+          object (-1: a cell), point_on_cell then lying on it.
 
         Returns a DistanceResult: found, collided (distance <= 1e-9 m),
         distance (m), link, shape, point_on_link and point_on_cell (map
@@ -207,9 +221,13 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         except ValueError:  # a numpy array among the values
             same = False
         request = cache.request if same else cache.lookup(key)
+        out = s.DistanceResult(_DISTANCE_RESULT_SIZE)
+        if world is not None or tree is None:
+            query_with_world(self, tree, links, world, "Query.distance",
+                             lambda raw: _distance(self._raw, raw, links._raw, request, out))
+            return out
         if not isinstance(tree, Octree) or not isinstance(links, LinkSet):
             _check_operands(tree, links, "Query.distance")
-        out = s.DistanceResult(_DISTANCE_RESULT_SIZE)
         status = _distance(self._raw, tree._raw, links._raw, request, out)
         if status:
             raise failure(status, "Query.distance", self, tree, links)
