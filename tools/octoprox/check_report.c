@@ -12,6 +12,12 @@ const char *check_class_name(int32_t cell_class) {
     }
 }
 
+static const char *object_name(const opx_world *world, int32_t object) {
+    const char *name = "?";
+    opx_world_get_object_name(world, (uint32_t)object, &name);
+    return name;
+}
+
 const char *check_link_name(const opx_linkset *links, uint32_t link) {
     const char *name = "?";
     opx_linkset_get_link_name(links, link, &name);
@@ -27,6 +33,19 @@ static void print_robot_options_text(const robot_args *r, uint32_t disabled_pair
         fputc('\n', stdout);
     }
     if (r->srdf != NULL) printf("srdf       %s (%u disabled collision pairs)\n", r->srdf, disabled_pairs);
+}
+
+static void print_scene(const check_context *c) {
+    uint32_t objects = 0;
+    if (c->world != NULL) opx_world_get_object_count(c->world, &objects);
+    if (!c->json) {
+        if (c->scene_path != NULL) printf("scene      %s (%u objects)\n", c->scene_path, objects);
+        return;
+    }
+    fputs(",\n  \"scene\": ", stdout);
+    if (c->scene_path != NULL) json_string(stdout, c->scene_path);
+    else fputs("null", stdout);
+    printf(",\n  \"scene_objects\": %u", objects);
 }
 
 static void print_robot_options_json(const robot_args *r, uint32_t disabled_pairs) {
@@ -50,8 +69,9 @@ void check_print_head(const check_context *c) {
     opx_linkset_get_link_count(c->links, &links);
     opx_linkset_get_disabled_pair_count(c->links, &disabled_pairs);
     if (!c->json) {
-        printf("map        %s\nrobot      %s (%u links)\n", c->map_path ? c->map_path : "none (--self only)",
-               c->urdf_path, links);
+        printf("map        %s\n", c->map_path ? c->map_path : c->scene_path ? "none (scene objects only)" : "none (--self only)");
+        print_scene(c);
+        printf("robot      %s (%u links)\n", c->urdf_path, links);
         print_robot_options_text(c->robot, disabled_pairs);
         printf("unknown    %s\n", policy);
         return;
@@ -59,6 +79,7 @@ void check_print_head(const check_context *c) {
     fputs("{\n  \"map\": ", stdout);
     if (c->map_path != NULL) json_string(stdout, c->map_path);
     else fputs("null", stdout);
+    print_scene(c);
     fputs(",\n  \"urdf\": ", stdout);
     json_string(stdout, c->urdf_path);
     printf(",\n  \"links\": %u", links);
@@ -80,10 +101,27 @@ static size_t colliding_links(const check_context *c, uint64_t contacts, unsigne
     return n;
 }
 
+/* A contact with a scene object: the object's name instead of a cell. */
+static void print_object_contact(const check_context *c, const opx_contact *k, int last) {
+    if (!c->json) {
+        printf("  %-28s object %s (shape %u)\n", check_link_name(c->links, k->link), object_name(c->world, k->object),
+               k->object_shape);
+        return;
+    }
+    fputs("    {\"link\": ", stdout);
+    json_string(stdout, check_link_name(c->links, k->link));
+    fputs(", \"object\": ", stdout);
+    json_string(stdout, object_name(c->world, k->object));
+    printf(", \"object_shape\": %u}%s\n", k->object_shape, last ? "" : ",");
+}
+
 static void print_contact(const check_context *c, const opx_contact *k, int last) {
-    if (c->json) {
+    if (k->object >= 0) {
+        print_object_contact(c, k, last);
+    } else if (c->json) {
         fputs("    {\"link\": ", stdout);
         json_string(stdout, check_link_name(c->links, k->link));
+        fputs(", \"object\": null", stdout);
         printf(", \"cell_class\": \"%s\", \"cell_center\": ", check_class_name(k->cell_class));
         json_vec3(stdout, k->cell_center);
         fputs(", \"cell_size\": ", stdout);
@@ -163,7 +201,12 @@ void check_print_cost(const check_context *c, double total, uint64_t found, uint
 void check_print_distance(const check_context *c, const opx_distance_result *d) {
     if (!c->json) {
         if (!d->found) {
-            printf("distance   no obstacle in the map\n");
+            printf("distance   no obstacle in the map%s\n", c->world != NULL ? " or the scene" : "");
+            return;
+        }
+        if (d->object >= 0) {
+            printf("distance   %.9f m, link %s to object %s\n", d->distance, check_link_name(c->links, d->link),
+                   object_name(c->world, d->object));
             return;
         }
         printf("distance   %.9f m, link %s to a %s cell at (%.3f, %.3f, %.3f)\n", d->distance,
@@ -175,6 +218,9 @@ void check_print_distance(const check_context *c, const opx_distance_result *d) 
     json_number(stdout, d->distance);
     fputs(", \"link\": ", stdout);
     json_string(stdout, d->found ? check_link_name(c->links, d->link) : "");
+    fputs(", \"object\": ", stdout);
+    if (d->found && d->object >= 0) json_string(stdout, object_name(c->world, d->object));
+    else fputs("null", stdout);
     fputs(", \"point_on_link\": ", stdout);
     json_vec3(stdout, d->point_on_link);
     fputs(", \"point_on_cell\": ", stdout);

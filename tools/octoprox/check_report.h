@@ -8,7 +8,9 @@
 #define CHECK_MAX_LISTED 10 /* contacts and cost boxes listed */
 
 typedef struct check_context {
-    const char *map_path, *urdf_path, *path_file;  /* map_path NULL: --self without a map */
+    const char *map_path, *urdf_path, *path_file;  /* map_path NULL: --self or --scene without a map */
+    const char *scene_path;                        /* --scene: NULL when not given */
+    const opx_world *world;                        /* its objects (NULL without --scene) */
     const robot_args *robot;
     const opx_octree *map;
     const opx_linkset *links;

@@ -10,7 +10,7 @@
 #include <string.h>
 
 static const char kHelp[] =
-    "usage: octoprox check [MAP.bt|MAP.ot] --urdf ROBOT.urdf [--package-dir DIR]...\n"
+    "usage: octoprox check [MAP.bt|MAP.ot] [--scene FILE] --urdf ROBOT.urdf [--package-dir DIR]...\n"
     "                      [--srdf ROBOT.srdf] [--joints name=value,...]\n"
     "                      [--base-pose POSE] [--padding M] [--disable-link NAME]...\n"
     "                      [--self] [--distance] [--cost] [--unknown free|occupied]\n"
@@ -20,9 +20,15 @@ static const char kHelp[] =
     "collision with the occupied cells (every contact's link is listed), and\n"
     "optionally the minimum distance and the cost of uncertain and unknown\n"
     "space the robot overlaps (probability x volume, m^3; paper IV.C).\n"
-    "With --self, also the robot against itself; the map may then be left out.\n"
+    "With --scene, also the known objects of a MoveIt planning scene; with --self,\n"
+    "also the robot against itself; the map may then be left out.\n"
     "\n"
     "options:\n"
+    "  --scene FILE          also the objects of a MoveIt planning scene: a\n"
+    "                        moveit_msgs/PlanningScene as YAML (.yaml, .yml) or\n"
+    "                        MoveIt's scene text (.scene); its frame is the map's;\n"
+    "                        contacts and the distance name the object (not\n"
+    "                        with --path)\n"
     "  --self                also self-collision: every pair of links but the\n"
     "                        SRDF's disabled pairs (adjacent links are not skipped\n"
     "                        unless the SRDF lists them); with --distance also the\n"
@@ -40,20 +46,22 @@ static const char kHelp[] =
     "  --resolution R        --path: the largest joint step between two checked\n"
     "                        configurations of a motion (rad or m; default 0.01)\n"
     "  --threads N           --path: threads checking it (default 1; 0: every core)\n"
-    "  --json                one JSON object: map, urdf, links, padding,\n"
-    "                        disabled_links [names], srdf, srdf_disabled_pairs,\n"
-    "                        unknown; then\n"
+    "  --json                one JSON object: map, scene, scene_objects, urdf,\n"
+    "                        links, padding, disabled_links [names], srdf,\n"
+    "                        srdf_disabled_pairs, unknown; then\n"
     "                        contact_count, colliding_links [names], contacts\n"
-    "                        [{link, cell_class, cell_center, cell_size}] (one\n"
+    "                        [{link, object: null, cell_class, cell_center,\n"
+    "                        cell_size} or {link, object, object_shape}] (one\n"
     "                        configuration) or path {file, waypoints,\n"
     "                        first_colliding_waypoint, min_distance,\n"
     "                        min_distance_waypoint} and motions {count,\n"
     "                        resolution, first_colliding,\n"
     "                        first_collision_fraction} (--path); distance {found,\n"
-    "                        distance, link, point_on_link, point_on_cell} with\n"
-    "                        --distance; cost {total, boxes_found, boxes [{link,\n"
-    "                        cell_class, min, max, probability, cost}]} with\n"
-    "                        --cost; self {checked_pairs, collided, contact_count,\n"
+    "                        distance, link, object, point_on_link,\n"
+    "                        point_on_cell} with --distance; cost {total,\n"
+    "                        boxes_found, boxes [{link, cell_class, min, max,\n"
+    "                        probability, cost}]} with --cost; self\n"
+    "                        {checked_pairs, collided, contact_count,\n"
     "                        contacts [{link_a, link_b, depth, position}]} and\n"
     "                        self_distance {found, distance, link_a, link_b,\n"
     "                        point_on_a, point_on_b} with --self (one\n"
@@ -62,7 +70,8 @@ static const char kHelp[] =
     "\n"
     "%s"
     "\n"
-    "exit codes: 0 no collision, 1 collision with the map or (--self) itself (with\n"
+    "exit codes: 0 no collision, 1 collision with the map, a scene object or (--self)\n"
+    "itself (with\n"
     "--path: some waypoint or motion),\n"
     "2 usage error, 3 a file cannot be read or is malformed, 4 internal error\n";
 
@@ -84,6 +93,9 @@ static int parse_option(cli_args *args, void *context) {
         if (got > 0 && strcmp(args->value, "free") == 0) a->context.unknown_policy = OPX_UNKNOWN_FREE;
         else if (got > 0 && strcmp(args->value, "occupied") == 0) a->context.unknown_policy = OPX_UNKNOWN_OCCUPIED;
         else return cli_usage("check", "--unknown needs 'free' or 'occupied'");
+    } else if ((got = cli_value(args, "--scene")) != 0) {
+        if (got < 0) return cli_usage("check", "--scene needs a scene file (.yaml, .yml or .scene)");
+        a->context.scene_path = args->value;
     } else if ((got = cli_value(args, "--path")) != 0) {
         if (got < 0) return cli_usage("check", "--path needs a CSV file");
         a->context.path_file = args->value;
@@ -112,7 +124,10 @@ static int parse_arguments(int argc, char **argv, check_args *a) {
     robot_args_init(&a->robot);
     code = cli_walk_map_arguments(argc, argv, "check", kHelp, kRobotOptionsHelp, &a->map, parse_option, a);
     if (code >= 0) return code;
-    if (a->map == NULL && !a->context.want_self) return cli_usage("check", "no map file given (or --self)");
+    if (a->map == NULL && !a->context.want_self && a->context.scene_path == NULL)
+        return cli_usage("check", "no map file given (or --self) and no --scene");
+    if (a->context.scene_path != NULL && a->context.path_file != NULL)
+        return cli_usage("check", "--scene and --path do not go together: paths check no scene objects");
     if (a->map == NULL && (a->context.path_file || a->context.want_cost))
         return cli_usage("check", "--path and --cost need a map file");
     if (a->robot.urdf == NULL) return cli_usage("check", "no robot given (--urdf ROBOT.urdf)");
@@ -148,18 +163,23 @@ static int check_map(check_context *c, int *collided) {
 
 /* One configuration: the map (when given), then the robot itself (--self). */
 static int check_one(check_context *c, int *collided) {
-    int self_collided = 0, code = c->map != NULL ? check_map(c, collided) : -1;
+    int self_collided = 0, code = c->map != NULL || c->world != NULL ? check_map(c, collided) : -1;
     if (code < 0 && c->want_self) code = check_self(c, &self_collided);
     *collided = *collided || self_collided;
     return code;
 }
 
-static int run(check_args *a, opx_octree *map, opx_linkset *links) {
+static int run(check_args *a, opx_octree *map, opx_linkset *links, const opx_world *world) {
     check_context *c = &a->context;
     int collided = 0, code;
     double start;
     opx_status status = opx_query_create(NULL, &c->query);
     if (status != OPX_OK) return cli_library_fail("check", status, "creating a query");
+    c->world = world;
+    if (world != NULL && (status = opx_query_set_world(c->query, world)) != OPX_OK) {
+        opx_query_destroy(c->query);
+        return cli_library_fail("check", status, "setting the scene");
+    }
     c->map = map;
     c->links = links;
     check_print_head(c);
@@ -174,14 +194,21 @@ int cmd_check(int argc, char **argv) {
     check_args a;
     opx_octree *map = NULL;
     opx_linkset *links = NULL;
+    opx_world *world = NULL;
     opx_status status;
     int code = parse_arguments(argc, argv, &a);
     if (code >= 0) return code;
     status = a.map != NULL ? opx_octree_load_file(a.map, NULL, &map) : OPX_OK;
     if (status != OPX_OK) return cli_library_fail("check", status, "loading the map %s", a.map);
+    status = a.context.scene_path != NULL ? opx_world_load_scene_file(a.context.scene_path, &world) : OPX_OK;
+    if (status != OPX_OK) {
+        opx_octree_destroy(map);
+        return cli_library_fail("check", status, "loading the scene %s", a.context.scene_path);
+    }
     code = robot_load(&a.robot, "check", &links);
-    if (code < 0) code = run(&a, map, links);
+    if (code < 0) code = run(&a, map, links, world);
     opx_linkset_destroy(links);
+    opx_world_destroy(world);
     opx_octree_destroy(map);
     return code;
 }
