@@ -5,10 +5,22 @@
  * against one map.
  *
  * The robot is a link set made from URDF (robot.h); joint vectors hold
- * joint_count values in model order, as opx_linkset_set_joint_positions
- * takes them (radians or metres; fixed, floating and planar joints' values
- * ignored, mimic joints following their masters), each finite and within
- * +-1e6.  Forward kinematics runs inside the call on the query's own
+ * joint_count values (radians or metres, each finite and within +-1e6) in
+ * one of two orders, which the request's joint_order field chooses:
+ *   - model order: every joint, as opx_linkset_set_joint_positions takes
+ *     them (fixed, floating and planar joints' values ignored, mimic joints
+ *     following their masters); joint_count is the joint count;
+ *   - active order: the active joints alone, as
+ *     opx_linkset_set_active_joint_positions takes them; joint_count is the
+ *     active joint count.
+ * OPX_JOINTS_BY_COUNT (the default) tells them apart by joint_count: the
+ * joint count means model order, the active joint count active order.
+ * This is never ambiguous: the active joints are some of the joints in
+ * the same order, so the two counts are equal only when every joint is
+ * active, and the two orders are then one.  OPX_JOINTS_MODEL and
+ * OPX_JOINTS_ACTIVE insist on one order (another joint_count is an invalid
+ * argument).  Both orders give the same answers for the same positions of
+ * the active joints.  Forward kinematics runs inside the call on the query's own
  * copies of the link set: the caller's link set is not moved (its poses
  * and joint positions stay as they are) and is only read, so any number of
  * queries may check configurations of one link set at once.  Links added
@@ -56,6 +68,15 @@
 extern "C" {
 #endif
 
+/* The order of joint vectors (opx_batch_request.joint_order,
+ * opx_motion_request.joint_order; see above). */
+/** Model or active order, told apart by joint_count (the default). */
+#define OPX_JOINTS_BY_COUNT 0
+/** Every joint in model order. */
+#define OPX_JOINTS_MODEL 1
+/** The active joints alone, in model order. */
+#define OPX_JOINTS_ACTIVE 2
+
 typedef struct opx_batch_request {
     uint32_t struct_size;
     int32_t unknown_policy;     /**< as in opx_collision_request */
@@ -72,10 +93,14 @@ typedef struct opx_batch_request {
     double distance_cutoff;
     uint32_t max_threads;       /**< 1 (default): the caller's thread; 0: one per hardware thread */
     int32_t obstacle_geometry;  /**< OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
+    /** The order of the rows: OPX_JOINTS_BY_COUNT (default),
+     * OPX_JOINTS_MODEL or OPX_JOINTS_ACTIVE (see above). */
+    int32_t joint_order;
+    int32_t reserved0;          /**< padding; keep 0 */
 } opx_batch_request;
 
 #define OPX_BATCH_REQUEST_INIT {sizeof(opx_batch_request), OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1, \
-    OPX_OBSTACLE_CELLS}
+    OPX_OBSTACLE_CELLS, OPX_JOINTS_BY_COUNT, 0}
 OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t size);
 
 /**
@@ -84,7 +109,8 @@ OPX_API opx_status opx_batch_request_init(opx_batch_request *request, size_t siz
  * configuration i collides, else 0 (it stops at the first contact unless
  * distances are asked); with compute_distance, out_distances[i] its
  * minimum distance (out_distances may be NULL otherwise).  joint_count
- * must equal the link set's joint count.  request may be NULL (defaults).
+ * is the joint count or the active joint count, as request->joint_order
+ * allows (above).  request may be NULL (defaults).
  * configuration_count 0 is an invalid argument (an empty batch is most
  * often a caller's slip).
  */
@@ -123,11 +149,16 @@ typedef struct opx_motion_request {
     double region_min[3];
     double region_max[3];
     int32_t obstacle_geometry;  /**< OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
-    int32_t reserved0;
+    int32_t reserved0;          /**< padding; keep 0 */
+    /** The order of start and goal vectors: OPX_JOINTS_BY_COUNT (default),
+     * OPX_JOINTS_MODEL or OPX_JOINTS_ACTIVE (see above).  The resolution
+     * applies to every moving joint, mimic joints included, in both. */
+    int32_t joint_order;
+    int32_t reserved1;          /**< padding; keep 0 */
 } opx_motion_request;
 
 #define OPX_MOTION_REQUEST_INIT {sizeof(opx_motion_request), OPX_UNKNOWN_FREE, 0.0, 0.01, 0, 0, \
-    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, OPX_OBSTACLE_CELLS, 0}
+    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, OPX_OBSTACLE_CELLS, 0, OPX_JOINTS_BY_COUNT, 0}
 OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t size);
 
 typedef struct opx_motion_result {
@@ -150,8 +181,9 @@ OPX_API opx_status opx_motion_result_init(opx_motion_result *result, size_t size
 
 /**
  * Checks the straight joint-space motion from `start` to `goal` (joint_count
- * values each, model order) at the request's resolution, the root link at
- * base_pose (map frame; NULL: the origin).  request may be NULL (defaults).
+ * values each, model or active order as above) at the request's
+ * resolution, the root link at base_pose (map frame; NULL: the origin).
+ * request may be NULL (defaults).
  */
 OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tree,
                                           const opx_linkset *links, const double *start,

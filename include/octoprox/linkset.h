@@ -125,8 +125,17 @@ OPX_API opx_status opx_linkset_get_pair_enabled(const opx_linkset *links, uint32
  */
 OPX_API opx_status opx_linkset_set_poses(opx_linkset *links, const opx_pose *poses,
                                          size_t count, size_t stride);
+/** The pose of link `link` in the MAP frame (position + unit quaternion
+ * x y z qx qy qz qw). */
 OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
                                         opx_pose *out_pose);
+/** Every link's pose in the MAP frame, in link order (out_poses[i] is link
+ * i, as opx_linkset_get_pose gives it; packed opx_pose elements).
+ * *out_count gets the link count; capacity below it:
+ * OPX_ERROR_BUFFER_TOO_SMALL (nothing written; out_poses may then be
+ * NULL). */
+OPX_API opx_status opx_linkset_get_poses(const opx_linkset *links, opx_pose *out_poses,
+                                         size_t capacity, size_t *out_count);
 
 /*
  * Aliases kept for compatibility: each behaves exactly as the function

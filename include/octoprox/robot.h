@@ -47,6 +47,19 @@
  * "model order" of opx_linkset_set_joint_positions.  Joint limits are
  * reported, not enforced.  A link set made by opx_linkset_create has no
  * joints: the FK calls on it fail with OPX_ERROR_UNSUPPORTED.
+ *
+ * Active joints: the revolute, continuous and prismatic joints that mimic
+ * no other joint, in model order.  Their values alone decide every link
+ * pose: fixed joints do not move, mimic joints follow their leaders, and
+ * floating and planar joints are not moved by FK (see OPX_JOINT_FLOATING;
+ * place a mobile base with base_pose), so none of those is active.  For
+ * a robot without floating or planar joints they are the joints MoveIt
+ * calls active (neither fixed nor mimic), in the URDF file's order; MoveIt
+ * and Pinocchio order joints along the kinematic tree, which may differ:
+ * match them by name (opx_linkset_get_active_joints, opx_joint_info.name)
+ * or use opx_linkset_set_named_joint_positions.
+ * opx_linkset_set_active_joint_positions takes one value per active joint;
+ * the batch calls (batch.h) take rows of either order.
  */
 #ifndef OCTOPROX_ROBOT_H
 #define OCTOPROX_ROBOT_H
@@ -149,13 +162,42 @@ OPX_API opx_status opx_linkset_get_joint_info(const opx_linkset *links, uint32_t
  */
 OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const double *positions,
                                                    size_t count, const opx_pose *base_pose);
-/** As above, but only the `count` named joints change; the others keep
- * their last values (initially 0).  An unknown name is an invalid
- * argument (the name is in the message) and changes nothing. */
+/** As above, but only the `count` named joints change (any subset, in
+ * any order; a name given twice takes its last value); the others keep
+ * their last values (initially 0).  Naming the active joints alone sets
+ * every link pose.  A mimic, fixed, floating or planar joint may be named
+ * but its value is ignored, as in model order.  count 0 recomputes the
+ * poses at base_pose.  An unknown name is an invalid argument (the name
+ * is in the message) and changes nothing. */
 OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links,
                                                          const char *const *names,
                                                          const double *positions, size_t count,
                                                          const opx_pose *base_pose);
+/** Number of active joints (see above): at most the joint count; 0 for a
+ * set not made from URDF. */
+OPX_API opx_status opx_linkset_get_active_joint_count(const opx_linkset *links,
+                                                      uint32_t *out_count);
+/** The model indices of the active joints, in model order (ascending):
+ * out_joint_indices[i] is the joint (opx_linkset_get_joint_info) that value
+ * i of opx_linkset_set_active_joint_positions sets.  *out_count gets the
+ * active joint count; capacity below it: OPX_ERROR_BUFFER_TOO_SMALL
+ * (nothing written; out_joint_indices may then be NULL). */
+OPX_API opx_status opx_linkset_get_active_joints(const opx_linkset *links,
+                                                 uint32_t *out_joint_indices, size_t capacity,
+                                                 size_t *out_count);
+/**
+ * FK from the active joints: `positions` holds `count` values, one per
+ * active joint in model order (opx_linkset_get_active_joints), and `count`
+ * must equal the active joint count.  Mimic joints follow their leaders;
+ * fixed, floating and planar joints need no value.  The link poses equal
+ * those of opx_linkset_set_joint_positions with the same values at the
+ * active joints' model indices.  Values, base_pose, errors and the links
+ * added after loading as in opx_linkset_set_joint_positions; on error
+ * nothing changes.
+ */
+OPX_API opx_status opx_linkset_set_active_joint_positions(opx_linkset *links,
+                                                          const double *positions, size_t count,
+                                                          const opx_pose *base_pose);
 /** The current joint positions in model order, as FK uses them (mimic
  * joints: their computed value; fixed, floating, planar: 0).  *out_count
  * gets the joint count; capacity below it: OPX_ERROR_BUFFER_TOO_SMALL

@@ -106,16 +106,16 @@ OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_oc
                                                   uint8_t *out_collided, double *out_distances, size_t capacity) {
     return guard(__func__, [&] {
         require_handles(query, tree, links);
-        const JointTree &joints = require_joint_tree(links, joint_count);
         opx_batch_request merged = OPX_BATCH_REQUEST_INIT;
         read_versioned(request, merged, "request");
+        const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
         const ConfigurationSettings settings = configuration_settings(merged, *tree->tree);
         require_rows(configuration_count, "configuration_count", capacity);
         require_pointer(out_collided, "out_collided");
         if (settings.distance) require_pointer(out_distances, "out_distances");
-        const JointRows rows = read_joint_rows(positions, configuration_count, joint_count, stride, "positions");
+        const JointRows rows = read_joint_rows(positions, configuration_count, layout, stride, "positions");
         const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, configuration_count);
-        check_configurations(query->batch, *tree->tree, links->links, joints, rows, bases, settings,
+        check_configurations(query->batch, *tree->tree, links->links, *layout.joints, rows, bases, settings,
                              ConfigurationOutputs{out_collided, out_distances});
         return OPX_OK;
     });
@@ -128,17 +128,17 @@ OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tr
     return guard(__func__, [&] {
         require_handles(query, tree, links);
         require_out_struct(out_result, "out_result");
-        const JointTree &joints = require_joint_tree(links, joint_count);
         opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
         read_versioned(request, merged, "request");
+        const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
         const MotionSettings settings = motion_settings(merged, *tree->tree);
-        const JointRows starts = read_joint_rows(start, 1, joint_count, 0, "start");
-        const JointRows goals = read_joint_rows(goal, 1, joint_count, 0, "goal");
+        const JointRows starts = read_joint_rows(start, 1, layout, 0, "start");
+        const JointRows goals = read_joint_rows(goal, 1, layout, 0, "goal");
         const BasePoses base = read_base_poses(base_pose, base_pose == nullptr ? 0 : 1, 0, 1);
-        std::vector<double> from(joint_count), to(joint_count);
+        std::vector<double> from(starts.model_count()), to(goals.model_count());
         starts.read(0, from.data()), goals.read(0, to.data());
         const MotionAnswer answer =
-            run_motion(query, tree, links, joints, from.data(), to.data(), base.at(0), settings);
+            run_motion(query, tree, links, *layout.joints, from.data(), to.data(), base.at(0), settings);
         write_versioned(out_result, motion_result_to_abi(answer, settings.collision.cost, query->context),
                         "out_result");
         return OPX_OK;
@@ -153,18 +153,18 @@ OPX_API opx_status opx_query_check_motions(opx_query *query, const opx_octree *t
                                            double *out_first_fractions, size_t capacity) {
     return guard(__func__, [&] {
         require_handles(query, tree, links);
-        const JointTree &joints = require_joint_tree(links, joint_count);
         opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
         read_versioned(request, merged, "request");
+        const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
         const MotionSettings settings = motion_settings(merged, *tree->tree);
         if (settings.collision.cost)
             throw_invalid("request->compute_cost is 1; the swept cost is given by opx_query_check_motion only");
         require_rows(motion_count, "motion_count", capacity);
         require_pointer(out_collided, "out_collided");
-        const JointRows from = read_joint_rows(starts, motion_count, joint_count, stride, "starts");
-        const JointRows to = read_joint_rows(goals, motion_count, joint_count, stride, "goals");
+        const JointRows from = read_joint_rows(starts, motion_count, layout, stride, "starts");
+        const JointRows to = read_joint_rows(goals, motion_count, layout, stride, "goals");
         const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, motion_count);
-        check_motions(query->batch, *tree->tree, links->links, joints, from, to, bases, settings, out_collided,
+        check_motions(query->batch, *tree->tree, links->links, *layout.joints, from, to, bases, settings, out_collided,
                       out_first_fractions);
         return OPX_OK;
     });

@@ -5,13 +5,47 @@
 
 namespace octoprox::capi {
 
-const JointTree &require_joint_tree(const opx_linkset *links, size_t joint_count) {
+namespace {
+
+// Whether rows of `joint_count` values hold the active joints alone.
+bool rows_of_active_joints(const JointTree &joints, size_t joint_count, int32_t joint_order) {
+    const size_t model = joints.joint_count(), active = joints.active_joints().size();
+    switch (joint_order) {
+    case OPX_JOINTS_BY_COUNT:
+        if (joint_count == model) return false;  // also when every joint is active: the same order
+        if (joint_count == active) return true;
+        throw_invalid(format("joint_count %zu is neither the number of joints, %zu (model order), nor the number "
+                             "of active joints, %zu",
+                             joint_count, model, active));
+    case OPX_JOINTS_MODEL:
+        if (joint_count != model)
+            throw_invalid(format("joint_count %zu differs from the number of joints, %zu (request->joint_order is "
+                                 "OPX_JOINTS_MODEL)",
+                                 joint_count, model));
+        return false;
+    case OPX_JOINTS_ACTIVE:
+        if (joint_count != active)
+            throw_invalid(format("joint_count %zu differs from the number of active joints, %zu "
+                                 "(request->joint_order is OPX_JOINTS_ACTIVE)",
+                                 joint_count, active));
+        return true;
+    default:
+        throw_invalid(format("request->joint_order is %d; OPX_JOINTS_BY_COUNT (0), OPX_JOINTS_MODEL (1) or "
+                             "OPX_JOINTS_ACTIVE (2) is needed",
+                             joint_order));
+    }
+}
+
+}  // namespace
+
+JointLayout read_joint_layout(const opx_linkset *links, size_t joint_count, int32_t joint_order) {
     const JointTree &joints = links->robot.joints;
     if (joints.empty()) throw ApiError(OPX_ERROR_UNSUPPORTED, "links has no joint tree (it was not made from URDF)");
-    if (joint_count != joints.joint_count())
-        throw_invalid(format("joint_count %zu differs from the number of joints, %zu", joint_count,
-                             joints.joint_count()));
-    return joints;
+    JointLayout layout;
+    layout.joints = &joints;
+    layout.joint_count = joint_count;
+    if (rows_of_active_joints(joints, joint_count, joint_order)) layout.active = &joints.active_joints();
+    return layout;
 }
 
 namespace {
@@ -19,7 +53,7 @@ namespace {
 void require_joint_values(const JointRows &rows, const char *argument) {
     std::vector<double> row(rows.joint_count);
     for (size_t r = 0; r < rows.count; ++r) {
-        rows.read(r, row.data());
+        rows.read_values(r, row.data());
         for (size_t j = 0; j < rows.joint_count; ++j)  // the name is formatted only for a bad value
             if (!joint_position_in_range(row[j]))
                 reject_joint_position(row[j], format("%s[row %zu][joint %zu]", argument, r, j).c_str());
@@ -28,8 +62,9 @@ void require_joint_values(const JointRows &rows, const char *argument) {
 
 }  // namespace
 
-JointRows read_joint_rows(const double *positions, size_t count, size_t joint_count, size_t stride,
+JointRows read_joint_rows(const double *positions, size_t count, const JointLayout &layout, size_t stride,
                           const char *argument) {
+    const size_t joint_count = layout.joint_count;
     const size_t row_bytes = joint_count * sizeof(double);
     if (stride != 0 && stride < row_bytes)
         throw_invalid(format("stride %zu is smaller than one row of %zu joints (%zu bytes)", stride, joint_count,
@@ -39,6 +74,8 @@ JointRows read_joint_rows(const double *positions, size_t count, size_t joint_co
     rows.bytes = reinterpret_cast<const unsigned char *>(positions);
     rows.count = count, rows.joint_count = joint_count;
     rows.stride = stride != 0 ? stride : row_bytes;
+    rows.active = layout.active;
+    rows.active_model_count = layout.joints->joint_count();
     require_joint_values(rows, argument);
     return rows;
 }

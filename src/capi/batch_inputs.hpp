@@ -9,13 +9,22 @@
 
 namespace octoprox::capi {
 
-// The joint tree of a link set made from URDF (OPX_ERROR_UNSUPPORTED for
-// others), whose joint count must equal `joint_count`.
-const JointTree &require_joint_tree(const opx_linkset *links, size_t joint_count);
+// The joint tree the rows are for, and what a row holds: joint_count
+// values, in model order or (active not null) the active joints alone.
+struct JointLayout {
+    const JointTree *joints = nullptr;
+    size_t joint_count = 0;
+    const std::vector<uint32_t> *active = nullptr;  // JointTree::active_joints() for rows of active joints
+};
 
-// `count` rows of `joint_count` doubles `stride` bytes apart (0: packed),
-// every value a valid joint position; `argument` names the array.
-JointRows read_joint_rows(const double *positions, size_t count, size_t joint_count, size_t stride,
+// The joint tree of a link set made from URDF (OPX_ERROR_UNSUPPORTED for
+// others) and the order of rows of `joint_count` values, as
+// `joint_order` (OPX_JOINTS_*, request->joint_order) allows.
+JointLayout read_joint_layout(const opx_linkset *links, size_t joint_count, int32_t joint_order);
+
+// `count` rows laid out as `layout` says, `stride` bytes apart (0:
+// packed), every value a valid joint position; `argument` names the array.
+JointRows read_joint_rows(const double *positions, size_t count, const JointLayout &layout, size_t stride,
                           const char *argument);
 
 // 0 poses (the identity), 1 (shared) or `rows` poses, `stride` bytes apart.

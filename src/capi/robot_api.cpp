@@ -1,7 +1,6 @@
 // C shims: link sets from URDF, joints and forward kinematics.
 #include "base/file_bytes.hpp"
-#include "capi/checks.hpp"
-#include "capi/handles.hpp"
+#include "capi/robot_inputs.hpp"
 #include "robot/urdf_model.hpp"
 
 #include <octoprox/robot.h>
@@ -40,28 +39,11 @@ opx_status load(UrdfInput input, opx_linkset **out) {
     return OPX_OK;
 }
 
-// The joint tree of a link set made from URDF; others have none.
-JointTree &require_joints(opx_linkset *links) {
-    require_pointer(links, "links");
-    if (links->robot.joints.empty())
-        throw ApiError(OPX_ERROR_UNSUPPORTED, "links has no joint tree (it was not made from URDF)");
-    return links->robot.joints;
-}
-
 uint32_t require_joint(const opx_linkset *links, uint32_t joint) {
     if (joint >= links->robot.joints.joint_count())
         throw_invalid(format("joint %u does not exist (the set has %zu joints)", joint,
                              links->robot.joints.joint_count()));
     return joint;
-}
-
-Pose read_base_pose(const opx_pose *base_pose) {
-    return base_pose == nullptr ? Pose() : read_pose(*base_pose, "base_pose");
-}
-
-opx_pose to_abi(const Pose &pose) {
-    const Eigen::Quaterniond q(pose.rotation);
-    return opx_pose{{pose.translation.x(), pose.translation.y(), pose.translation.z()}, {q.x(), q.y(), q.z(), q.w()}};
 }
 
 opx_joint_info joint_info(const Joint &joint) {
@@ -70,7 +52,7 @@ opx_joint_info joint_info(const Joint &joint) {
     info.name = joint.name.c_str();
     info.parent_link = joint.parent_link, info.child_link = joint.child_link;
     for (int i = 0; i < 3; ++i) info.axis[i] = joint.axis[i];
-    info.origin = to_abi(joint.origin);
+    info.origin = pose_to_abi(joint.origin);
     info.has_limits = joint.has_limits ? 1 : 0;
     info.mimic_joint = joint.mimic;
     info.lower = joint.lower, info.upper = joint.upper;
@@ -184,14 +166,10 @@ OPX_API opx_status opx_linkset_set_joint_positions(opx_linkset *links, const dou
         JointTree &joints = require_joints(links);
         if (count != joints.joint_count())
             throw_invalid(format("count %zu differs from the number of joints, %zu", count, joints.joint_count()));
-        if (count > 0) require_pointer(positions, "positions");
-        for (size_t i = 0; i < count; ++i)  // the name is formatted only for a bad value
-            if (!joint_position_in_range(positions[i]))
-                reject_joint_position(positions[i], format("positions[%zu]", i).c_str());
+        require_joint_values(positions, count);
         const Pose base = read_base_pose(base_pose);
         joints.set_commanded(positions);
-        joints.update_positions();
-        links->robot.apply(links->links, base);
+        apply_joint_positions(links, base);
         return OPX_OK;
     });
 }
@@ -211,8 +189,7 @@ OPX_API opx_status opx_linkset_set_named_joint_positions(opx_linkset *links, con
         }
         const Pose base = read_base_pose(base_pose);
         for (size_t i = 0; i < count; ++i) joints.set_commanded(joints.find(names[i]), positions[i]);
-        joints.update_positions();
-        links->robot.apply(links->links, base);
+        apply_joint_positions(links, base);
         return OPX_OK;
     });
 }

@@ -2,6 +2,7 @@
 
 #include "base/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -27,6 +28,7 @@ void JointTree::build(std::vector<Joint> joints, size_t link_count, uint32_t roo
     order_joints(source);
     resolve_mimics(source);
     classify_motions();
+    find_active_joints();
     commanded_.assign(joints_.size(), 0.0);
     positions_.assign(joints_.size(), 0.0);
     update_positions();
@@ -109,6 +111,24 @@ void JointTree::compose_mimic(uint32_t k, const std::string &source) {
 
 void JointTree::set_commanded(const double *values) {
     for (size_t j = 0; j < commanded_.size(); ++j) commanded_[j] = values[j];
+}
+
+void JointTree::find_active_joints() {
+    active_.clear();
+    for (uint32_t j = 0; j < joints_.size(); ++j)
+        if (joints_[j].moves() && joints_[j].mimic == kNoIndex) active_.push_back(j);
+}
+
+// The other joints' commanded values are never read: positions_from takes
+// a moving joint's value from the first joint of its mimic chain, which
+// mimics none: an active joint, or one that does not move (value 0).
+void JointTree::set_active_commanded(const double *values) {
+    for (size_t i = 0; i < active_.size(); ++i) commanded_[active_[i]] = values[i];
+}
+
+void JointTree::scatter_active(const double *active, double *model) const {
+    std::fill(model, model + joints_.size(), 0.0);
+    for (size_t i = 0; i < active_.size(); ++i) model[active_[i]] = active[i];
 }
 
 void JointTree::update_positions() { positions_from(commanded_.data(), positions_.data()); }

@@ -52,10 +52,18 @@ public:
     uint32_t root_link() const { return root_link_; }
     const Joint &joint(uint32_t index) const { return joints_[index]; }
     uint32_t find(const std::string &name) const;  // kNoIndex when absent
+    // The joints FK moves by their own value (revolute, continuous and
+    // prismatic joints that mimic none), in model order: every joint's
+    // position follows from theirs.
+    const std::vector<uint32_t> &active_joints() const { return active_; }
+    // Model-order values from `active` (active_joints().size() values):
+    // each active joint's value at its model index, 0 elsewhere.
+    void scatter_active(const double *active, double *model) const;
 
     // The values callers set, per joint; FK reads positions().
     void set_commanded(const double *values);  // joint_count() values
     void set_commanded(uint32_t joint, double value) { commanded_[joint] = value; }
+    void set_active_commanded(const double *values);  // active_joints().size() values
     void update_positions();                    // after set_commanded
     const std::vector<double> &positions() const { return positions_; }
 
@@ -85,6 +93,7 @@ private:
     void order_joints(const std::string &source);
     void resolve_mimics(const std::string &source);
     void compose_mimic(uint32_t joint, const std::string &source);
+    void find_active_joints();
 
     std::vector<Joint> joints_;
     std::unordered_map<std::string, uint32_t> by_name_;
@@ -92,6 +101,7 @@ private:
     std::vector<uint32_t> master_;     // per joint: the non-mimic joint it follows
     std::vector<double> multiplier_, offset_;  // composed along mimic chains
     std::vector<double> commanded_, positions_;
+    std::vector<uint32_t> active_;     // model indices of the active joints
     // Per joint, what compose() may skip: an origin without rotation, and
     // an axis along x, y or z (0, 1, 2; -1: another), with its sign: most
     // URDF joints turn about a frame axis, a rotation of two columns.

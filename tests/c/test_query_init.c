@@ -145,6 +145,7 @@ static void default_values_are_documented_ones(void **state) {
     assert_int_equal(b.max_threads, 1);
     assert_int_equal(b.self_collision + b.compute_distance, 0);
     assert_true(b.distance_cutoff == 0.0);
+    assert_int_equal(b.joint_order, OPX_JOINTS_BY_COUNT);
 
     opx_motion_request m;
     assert_ok(opx_motion_request_init(&m, sizeof m));
@@ -152,6 +153,7 @@ static void default_values_are_documented_ones(void **state) {
     assert_int_equal(m.max_threads, 1);
     assert_int_equal(m.max_cost_boxes, 16);
     assert_int_equal(m.self_collision + m.compute_cost, 0);
+    assert_int_equal(m.joint_order, OPX_JOINTS_BY_COUNT);
 
     opx_motion_result mr;
     assert_ok(opx_motion_result_init(&mr, sizeof mr));
@@ -161,12 +163,14 @@ static void default_values_are_documented_ones(void **state) {
 /* The batch structs' layouts: fixed-width fields, no implicit padding. */
 static void batch_struct_layouts_are_fixed(void **state) {
     (void)state;
-    assert_int_equal(sizeof(opx_batch_request), 40);
+    assert_int_equal(sizeof(opx_batch_request), 48);
     assert_int_equal(offsetof(opx_batch_request, distance_cutoff), 24);
     assert_int_equal(offsetof(opx_batch_request, max_threads), 32);
     assert_int_equal(offsetof(opx_batch_request, obstacle_geometry), 36);
-    assert_int_equal(sizeof(opx_motion_request), 104);
+    assert_int_equal(offsetof(opx_batch_request, joint_order), 40);
+    assert_int_equal(sizeof(opx_motion_request), 112);
     assert_int_equal(offsetof(opx_motion_request, obstacle_geometry), 96);
+    assert_int_equal(offsetof(opx_motion_request, joint_order), 104);
     assert_int_equal(offsetof(opx_motion_request, resolution), 16);
     assert_int_equal(offsetof(opx_motion_request, max_threads), 36);
     assert_int_equal(offsetof(opx_motion_request, region_max), 72);

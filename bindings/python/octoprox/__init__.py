@@ -13,13 +13,14 @@ distance, path, self_collide, check_configurations...), World (known
 objects beside the map, from MoveIt planning scenes or by hand; the
 ``world=`` keyword of Query.collide and Query.distance).  Units are metres
 and radians; poses are x y z qx qy qz qw (ROS order).  Named values are
-IntEnum classes (CellClass, Engine, UnknownPolicy, ObstacleGeometry, ...),
+IntEnum classes (CellClass, Engine, UnknownPolicy, ObstacleGeometry,
+JointOrder, ...),
 also exported as constants (CELL_OCCUPIED, ENGINE_AMORTIZED, ...).
 Failures raise OctoproxError subclasses that name the Python method, e.g.
 "Query.collide: ...".  The library is found through $OPX_LIBRARY, next to
 this package, or on the system's library path.
 """
-from ._enums import (CellClass, CellMask, Engine, FileFormat, InsertMode, JointType,
+from ._enums import (CellClass, CellMask, Engine, FileFormat, InsertMode, JointOrder, JointType,
                      ObstacleGeometry, ShapeKind, UnknownPolicy)
 from ._errors import (BufferTooSmallError, CorruptDataError, InternalError,
                       InvalidArgumentError, IoError, OctoproxError, OutOfMemoryError,
@@ -41,6 +42,7 @@ from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, J
 from .query import (ALL_CONTACTS, ENGINE_AMORTIZED, ENGINE_DIRECT, OBSTACLE_CELLS,
                     OBSTACLE_POINT_EXTENTS, UNKNOWN_FREE, UNKNOWN_OCCUPIED, Query)
 from .world import World
+from .batch import JOINTS_ACTIVE, JOINTS_BY_COUNT, JOINTS_MODEL
 from . import io  # PCD and PLY files as numpy arrays: io.read_pcd, io.read_ply
 
 CELL_UNKNOWN, CELL_FREE, CELL_UNCERTAIN, CELL_OCCUPIED = CellClass
@@ -68,7 +70,7 @@ __all__ = [
     "Octree", "LinkSet", "Query", "World", "io", "version", "version_number", "status_name",
     "HEADER_VERSION", "lib",
     # named values
-    "CellClass", "CellMask", "Engine", "FileFormat", "InsertMode", "JointType",
+    "CellClass", "CellMask", "Engine", "FileFormat", "InsertMode", "JointOrder", "JointType",
     "ObstacleGeometry", "ShapeKind", "UnknownPolicy",
     # results, requests and options (the C structs)
     "CameraIntrinsics", "CellInfo", "CollisionRequest", "CollisionResult", "Contact", "CostBox",
@@ -88,4 +90,5 @@ __all__ = [
     "ALL_CONTACTS", "JOINT_FIXED", "JOINT_REVOLUTE", "JOINT_CONTINUOUS",
     "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE", "SHAPE_SPHERE",
     "SHAPE_BOX", "SHAPE_CYLINDER", "SHAPE_CAPSULE", "SHAPE_CONVEX", "SHAPE_MESH",
+    "JOINTS_BY_COUNT", "JOINTS_MODEL", "JOINTS_ACTIVE",
 ]

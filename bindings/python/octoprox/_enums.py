@@ -121,6 +121,19 @@ class JointType(_Named):
     PLANAR = 5
 
 
+class JointOrder(_Named):
+    """What a row of joint values holds in Query.check_configurations,
+    check_motion and check_motions.  BY_COUNT (the default): told by its
+    length, every joint (model order, LinkSet.joint_names) or the active
+    joints alone (LinkSet.active_joint_names); never ambiguous, as the two
+    lengths are equal only when every joint is active and the two orders
+    are then one.  MODEL and ACTIVE insist on one of them (another length
+    raises InvalidArgumentError)."""
+    BY_COUNT = 0
+    MODEL = 1
+    ACTIVE = 2
+
+
 def converter(cls):
     """A function giving the member of ``cls`` for a value the library
     reports, or the value itself when no member has it."""

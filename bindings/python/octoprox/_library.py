@@ -97,6 +97,7 @@ SIGNATURES = {
     "opx_linkset_set_link_enabled": (status, [handle, c_uint32, c_int32]),
     "opx_linkset_set_poses": (status, [handle, c_void_p, c_size_t, c_size_t]),
     "opx_linkset_get_pose": (status, [handle, c_uint32, P(s.Pose)]),
+    "opx_linkset_get_poses": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
     "opx_linkset_set_pair_enabled": (status, [handle, c_uint32, c_uint32, c_int32]),
     "opx_linkset_get_pair_enabled": (status, [handle, c_uint32, c_uint32, P(c_int32)]),
     # robot.h
@@ -109,6 +110,9 @@ SIGNATURES = {
     "opx_linkset_set_named_joint_positions": (status, [handle, P(c_char_p), c_void_p, c_size_t,
                                                        P(s.Pose)]),
     "opx_linkset_get_joint_positions": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
+    "opx_linkset_get_active_joint_count": (status, [handle, P(c_uint32)]),
+    "opx_linkset_get_active_joints": (status, [handle, c_void_p, c_size_t, P(c_size_t)]),
+    "opx_linkset_set_active_joint_positions": (status, [handle, c_void_p, c_size_t, P(s.Pose)]),
     "opx_linkset_get_disabled_pair_count": (status, [handle, P(c_uint32)]),
     "opx_linkset_get_disabled_pair": (status, [handle, c_uint32, P(c_uint32), P(c_uint32)]),
     # query.h

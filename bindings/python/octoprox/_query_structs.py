@@ -6,7 +6,7 @@ as bool, codes as IntEnum members.
 """
 from ctypes import c_double, c_int32, c_uint32, c_uint64, c_int64
 
-from ._enums import CellClass, Engine, ObstacleGeometry, UnknownPolicy, converter
+from ._enums import CellClass, Engine, JointOrder, ObstacleGeometry, UnknownPolicy, converter
 from ._struct_base import D3, Struct, typed_fields
 
 
@@ -190,11 +190,12 @@ class BatchRequest(Struct):
     occupancy_threshold, self_collision, compute_distance (the distance
     keyword), distance_cutoff (m; 0: none), max_threads (the threads
     keyword: 1, the caller's thread; 0: one per hardware thread),
-    obstacle_geometry."""
+    obstacle_geometry, joint_order (JointOrder: what a row holds)."""
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("self_collision", c_int32),
                 ("compute_distance", c_int32), ("distance_cutoff", c_double),
-                ("max_threads", c_uint32), ("obstacle_geometry", c_int32)]
+                ("max_threads", c_uint32), ("obstacle_geometry", c_int32),
+                ("joint_order", c_int32), ("reserved0", c_int32)]
 
 
 class MotionRequest(Struct):
@@ -203,13 +204,14 @@ class MotionRequest(Struct):
     step between checked configurations, rad or m, 0.01), self_collision,
     compute_cost (check_motion only), max_cost_boxes, max_threads
     (check_motions), unknown_probability, region_min/max,
-    obstacle_geometry."""
+    obstacle_geometry, joint_order (JointOrder: what start and goal hold)."""
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("resolution", c_double),
                 ("self_collision", c_int32), ("compute_cost", c_int32),
                 ("max_cost_boxes", c_uint32), ("max_threads", c_uint32),
                 ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3),
-                ("obstacle_geometry", c_int32), ("reserved0", c_int32)]
+                ("obstacle_geometry", c_int32), ("reserved0", c_int32),
+                ("joint_order", c_int32), ("reserved1", c_int32)]
 
 
 class MotionResult(Struct):
@@ -225,6 +227,7 @@ class MotionResult(Struct):
 
 # Flags read as bool, codes as IntEnum members (written back as ints).
 _CELL, _POLICY, _GEOMETRY = converter(CellClass), converter(UnknownPolicy), converter(ObstacleGeometry)
+_ORDER = converter(JointOrder)
 typed_fields(QueryOptions, engine=converter(Engine))
 typed_fields(QueryStats, engine=converter(Engine))
 typed_fields(CollisionRequest, unknown_policy=_POLICY, compute_cost=bool, compute_penetration=bool,
@@ -241,7 +244,7 @@ typed_fields(PathRequest, unknown_policy=_POLICY, compute_distance=bool, compute
              obstacle_geometry=_GEOMETRY)
 typed_fields(PathResult, collided=bool)
 typed_fields(BatchRequest, unknown_policy=_POLICY, self_collision=bool, compute_distance=bool,
-             obstacle_geometry=_GEOMETRY)
+             obstacle_geometry=_GEOMETRY, joint_order=_ORDER)
 typed_fields(MotionRequest, unknown_policy=_POLICY, self_collision=bool, compute_cost=bool,
-             obstacle_geometry=_GEOMETRY)
+             obstacle_geometry=_GEOMETRY, joint_order=_ORDER)
 typed_fields(MotionResult, collided=bool)

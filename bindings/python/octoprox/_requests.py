@@ -11,11 +11,12 @@ every time.
 import ctypes
 from typing import Any, Dict, Optional, Sequence, Tuple, Type
 
-from ._enums import ObstacleGeometry, UnknownPolicy
+from ._enums import JointOrder, ObstacleGeometry, UnknownPolicy
 from ._library import init_struct, set_field
 
 # Keywords whose values are IntEnum members (any member, value or name).
-ENUMS = {"unknown_policy": UnknownPolicy, "obstacle_geometry": ObstacleGeometry}
+ENUMS = {"unknown_policy": UnknownPolicy, "obstacle_geometry": ObstacleGeometry,
+         "joint_order": JointOrder}
 _MAX_KEYS = 64  # distinct keys kept; more (a cutoff varied every call) start over
 
 

@@ -4,7 +4,7 @@ from typing import Sequence, Union
 
 import numpy as np
 
-from ._enums import Engine, FileFormat, InsertMode, ObstacleGeometry, UnknownPolicy
+from ._enums import Engine, FileFormat, InsertMode, JointOrder, ObstacleGeometry, UnknownPolicy
 from ._struct_base import Pose
 
 #: x, y, z in metres.
@@ -20,6 +20,7 @@ InsertModeLike = Union[InsertMode, int, str]
 FileFormatLike = Union[FileFormat, int, str]
 UnknownPolicyLike = Union[UnknownPolicy, int, str]
 ObstacleGeometryLike = Union[ObstacleGeometry, int, str]
+JointOrderLike = Union[JointOrder, int, str]
 
 __all__ = ["Vector3", "PoseLike", "ArrayLike", "PathLike", "EngineLike", "InsertModeLike",
-           "FileFormatLike", "UnknownPolicyLike", "ObstacleGeometryLike"]
+           "FileFormatLike", "UnknownPolicyLike", "ObstacleGeometryLike", "JointOrderLike"]

@@ -2,9 +2,12 @@
 Query.check_configurations, check_motion and check_motions (Query inherits
 them).
 
-The robot is a LinkSet made from URDF.  Joint vectors are rows of every
-joint in model order (LinkSet.joint_names, as set_joint_positions takes
-them; radians or metres).  Forward kinematics runs on the query's own
+The robot is a LinkSet made from URDF.  Joint vectors are rows of the
+active joints (LinkSet.active_joint_names: the moving joints that mimic
+none, as MoveIt and planners hold them) or of every joint in model order
+(LinkSet.joint_names), told apart by their length (joint_order=
+JointOrder.BY_COUNT, the default; JointOrder.ACTIVE or MODEL insists on
+one); radians or metres.  Forward kinematics runs on the query's own
 copies: the robot does not move.  A configuration collides as
 Query.collide would say after set_joint_positions (and, with
 self_collision, as self_collide), whatever the thread count.  Arrays go in
@@ -21,24 +24,26 @@ import numpy as np
 
 from . import _structs as s
 from ._arrays import pose_array
-from ._enums import ObstacleGeometry, UnknownPolicy
+from ._enums import JointOrder, ObstacleGeometry, UnknownPolicy
 from ._errors import invalid
 from ._handle import api
 from ._library import init_struct, lib, make_pose
 from ._requests import RequestCache
 from ._structs import MotionResult
-from ._types import ArrayLike, ObstacleGeometryLike, PoseLike, UnknownPolicyLike, Vector3
+from ._types import (ArrayLike, JointOrderLike, ObstacleGeometryLike, PoseLike, UnknownPolicyLike,
+                     Vector3)
 from .linkset import LinkSet
 from .octree import Octree
 
+JOINTS_BY_COUNT, JOINTS_MODEL, JOINTS_ACTIVE = JointOrder
 _ZERO3 = (0.0, 0.0, 0.0)
 _CONFIGURATIONS = ("max_threads", "self_collision", "compute_distance", "unknown_policy",
-                   "occupancy_threshold", "distance_cutoff", "obstacle_geometry")
+                   "occupancy_threshold", "distance_cutoff", "obstacle_geometry", "joint_order")
 _MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshold",
            "compute_cost", "max_cost_boxes", "unknown_probability", "region_min", "region_max",
-           "obstacle_geometry")
+           "obstacle_geometry", "joint_order")
 _MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
-            "occupancy_threshold", "obstacle_geometry")
+            "occupancy_threshold", "obstacle_geometry", "joint_order")
 
 
 def joint_rows(q, where):
@@ -100,11 +105,15 @@ class BatchQueries:
                              distance: bool = False, *,
                              unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                              occupancy_threshold: float = 0.0, distance_cutoff: float = 0.0,
-                             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                             joint_order: JointOrderLike = JointOrder.BY_COUNT
                              ) -> Union[np.ndarray, Tuple[np.ndarray, np.ndarray]]:
         """Checks many joint vectors of a robot made from URDF at once.
 
-        q: an (N, dof) array, every joint in model order.
+        q: an (N, dof) array: dof = robot.active_joint_count, the active
+          joints (robot.active_joint_names), or dof = robot.joint_count,
+          every joint in model order (joint_order: JointOrder, BY_COUNT
+          tells them by dof; ACTIVE or MODEL insists on one).
         threads: 1 runs on the calling thread, 0 on every core, N on N
           (opx_batch_request.max_threads); the answers do not depend on it.
         self_collision: also the robot's own enabled pairs.
@@ -120,8 +129,9 @@ class BatchQueries:
 
         Returns a numpy bool array of N collided flags; with distance=True
         a tuple (collided, distances).  Raises InvalidArgumentError naming
-        the row and joint of a bad value, UnsupportedError for a robot not
-        made from URDF, TypeError for swapped operands.
+        the row and joint of a bad value or a dof that is neither count,
+        UnsupportedError for a robot not made from URDF, TypeError for
+        swapped operands.
         """
         _check_operands(tree, robot, "Query.check_configurations")
         rows = joint_rows(q, "Query.check_configurations")
@@ -132,7 +142,7 @@ class BatchQueries:
             bases = _BasePoses(base_pose, n, "Query.check_configurations")
             request = self._configuration_requests.lookup(
                 (threads, self_collision, distance, unknown_policy, occupancy_threshold,
-                 distance_cutoff, obstacle_geometry))
+                 distance_cutoff, obstacle_geometry, joint_order))
             lib.opx_query_check_configurations(
                 self, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows),
                 bases.address, bases.count, bases.stride, request, collided.ctypes.data,
@@ -147,10 +157,12 @@ class BatchQueries:
                      occupancy_threshold: float = 0.0, compute_cost: bool = False,
                      max_cost_boxes: int = 16, unknown_probability: float = 0.5,
                      region_min: Vector3 = _ZERO3, region_max: Vector3 = _ZERO3,
-                     obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                     obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                     joint_order: JointOrderLike = JointOrder.BY_COUNT
                      ) -> MotionResult:
         """Checks the straight joint-space motion from start to goal (joint
-        vectors in model order).
+        vectors of the active joints or of every joint in model order, as
+        check_configurations takes rows; joint_order as there).
 
         resolution: the largest step of any joint between two checked
           configurations (rad or m, > 0): n = ceil(max |goal - start| /
@@ -174,7 +186,8 @@ class BatchQueries:
             raise invalid(f"start has {len(a)} joints, goal {len(b)}", "Query.check_motion")
         request = self._motion_requests.lookup(
             (resolution, self_collision, unknown_policy, occupancy_threshold, compute_cost,
-             max_cost_boxes, unknown_probability, region_min, region_max, obstacle_geometry))
+             max_cost_boxes, unknown_probability, region_min, region_max, obstacle_geometry,
+             joint_order))
         out = init_struct(s.MotionResult)
         base = None if base_pose is None else ctypes.byref(make_pose(base_pose))
         if compute_cost:
@@ -191,12 +204,14 @@ class BatchQueries:
                       base_pose: Optional[PoseLike] = None, *,
                       unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                       occupancy_threshold: float = 0.0,
-                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                      joint_order: JointOrderLike = JointOrder.BY_COUNT
                       ) -> Tuple[np.ndarray, np.ndarray]:
         """Checks many motions (a planner's edges): row m of starts to row m
-        of goals, (M, dof) arrays, as check_motion does (no cost here).
-        threads and base_pose (one, or one per row) as
-        check_configurations; other keywords as check_motion.
+        of goals, (M, dof) arrays of active joints or of every joint, as
+        check_motion does (no cost here).  threads, base_pose (one, or one
+        per row) and joint_order as check_configurations; other keywords
+        as check_motion.
 
         Returns (collided, first_fractions): a bool array and each
         motion's first colliding fraction (-1: none).
@@ -215,7 +230,7 @@ class BatchQueries:
             bases = _BasePoses(base_pose, n, "Query.check_motions")
             request = self._motions_requests.lookup(
                 (resolution, threads, self_collision, unknown_policy, occupancy_threshold,
-                 obstacle_geometry))
+                 obstacle_geometry, joint_order))
             lib.opx_query_check_motions(self, tree, robot, a.ctypes.data, b.ctypes.data, n,
                                         a.shape[1], _row_stride(a), bases.address, bases.count,
                                         bases.stride, request, collided.ctypes.data,

@@ -18,7 +18,7 @@ from typing import List, Optional, Union
 import numpy as np
 
 from . import _structs as s
-from ._arrays import pose_array, pose_strides, triangle_array, vertex_array
+from ._arrays import needed_count, pose_array, pose_strides, triangle_array, vertex_array
 from ._enums import ShapeKind
 from ._handle import Handle, api
 from ._library import init_struct, lib, make_pose
@@ -236,3 +236,13 @@ class LinkSet(Handle, RobotModel):
         out = s.Pose()
         lib.opx_linkset_get_pose(self, link, out)
         return tuple(out.position) + tuple(out.orientation)
+
+    @api("LinkSet.poses")
+    def poses(self) -> np.ndarray:
+        """Every link's pose in the map frame, in link order: a new float64
+        array of shape (link_count, 7), rows x y z qx qy qz qw (row i is
+        pose(i)); set_poses takes it back."""
+        out = np.zeros((needed_count(lib.opx_linkset_get_poses, self), 7), dtype=np.float64)
+        count = ctypes.c_size_t()
+        lib.opx_linkset_get_poses(self, out.ctypes.data, len(out), ctypes.byref(count))
+        return out[:count.value]

@@ -5,22 +5,30 @@ Frames: a link's frame is the URDF link frame (LinkSet.pose gives it in
 the map frame); base_pose is the pose of the URDF root link in the map
 frame (None: identity); a joint's origin is the child link frame in the
 parent's at position 0, its axis in the child link frame.  Joint positions
-are radians (revolute, continuous) or metres (prismatic), in model order:
-the URDF file's joint order, fixed joints included.  Every <link> becomes
-a link (same name, file order), every <collision> a shape (box, sphere,
-cylinder, or a mesh read with assimp).
+are radians (revolute, continuous) or metres (prismatic), in model order
+(the URDF file's joint order, fixed joints included) or in active order:
+the active joints alone, the revolute, continuous and prismatic joints
+that mimic none, in model order (MoveIt's active joints of a robot without
+floating or planar joints; MoveIt and Pinocchio order joints along the
+tree, so match them by name: active_joint_names).  Their values decide
+every link pose: mimic joints follow their leaders, fixed joints do not
+move, and floating and planar joints are held at their origin (place a
+mobile base with base_pose).  Every <link> becomes a link (same name, file
+order), every <collision> a shape (box, sphere, cylinder, or a mesh read
+with assimp).
 """
 from __future__ import annotations
 
 import ctypes
 import os
-from typing import Dict, List, Optional, Sequence
+from typing import List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _structs as s
 from ._arrays import read_array
 from ._enums import JointType
+from ._errors import invalid
 from ._handle import api
 from ._library import init_struct, lib, make_pose
 from ._structs import JointInfo, PairSamplingResult
@@ -112,25 +120,82 @@ class RobotModel:
         """Every joint's name, in model order."""
         return [self.joint_info(j).name for j in range(self.joint_count)]
 
+    @property
+    @api("LinkSet.active_joint_count")
+    def active_joint_count(self) -> int:
+        """The number of active joints (see the module): the length of an
+        active joint vector (0 for a set not made from URDF)."""
+        count = ctypes.c_uint32()
+        lib.opx_linkset_get_active_joint_count(self, ctypes.byref(count))
+        return count.value
+
+    @property
+    @api("LinkSet.active_joints")
+    def active_joints(self) -> List[int]:
+        """The model indices of the active joints, in model order: value i
+        of an active joint vector sets joint active_joints[i]."""
+        return [int(j) for j in read_array(lib.opx_linkset_get_active_joints, self,
+                                           dtype=np.uint32)]
+
+    @property
+    @api("LinkSet.active_joint_names")
+    def active_joint_names(self) -> List[str]:
+        """The active joints' names, in the order of an active joint vector
+        (to match a MoveIt or Pinocchio vector by name)."""
+        return [self.joint_info(j).name for j in self.active_joints]
+
     @api("LinkSet.set_joint_positions")
-    def set_joint_positions(self, positions: ArrayLike, base_pose: Optional[PoseLike] = None
-                            ) -> None:
-        """Forward kinematics: every joint position in model order (radians
-        or metres; values of fixed, floating and planar joints ignored,
-        mimic joints following their masters), the root link at base_pose
-        in the map frame (None: identity); every link pose is set.  Raises
-        InvalidArgumentError for a wrong count or a value that is not
-        finite or beyond 1e6, UnsupportedError for a set not made from
-        URDF; on error nothing changes."""
+    def set_joint_positions(self, positions: Union[ArrayLike, Mapping[str, float]],
+                            base_pose: Optional[PoseLike] = None) -> None:
+        """Forward kinematics, the root link at base_pose in the map frame
+        (None: identity); every link pose is set.  positions (radians or
+        metres) is either
+          * a vector of active_joint_count values, the active joints in
+            order (active_joint_names), as MoveIt and planners hold them;
+          * a vector of joint_count values, every joint in model order
+            (joint_names; values of fixed, floating and planar joints
+            ignored, mimic joints following their masters); when both
+            counts are equal every joint is active and the two are one;
+          * a {name: position} mapping: set_named_joint_positions.
+        Raises InvalidArgumentError for a length that is neither count or
+        a value that is not finite or beyond 1e6, UnsupportedError for a
+        set not made from URDF; on error nothing changes."""
+        if isinstance(positions, Mapping):
+            self.set_named_joint_positions(positions, base_pose)
+            return
         values = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1)
+        if len(values) != self.joint_count and len(values) == self.active_joint_count:
+            lib.opx_linkset_set_active_joint_positions(self, values.ctypes.data, len(values),
+                                                       _base(base_pose))
+            return
+        if len(values) != self.joint_count and self.joint_count:
+            raise invalid(f"{len(values)} positions are neither the {self.active_joint_count} "
+                          f"active joints nor the {self.joint_count} joints in model order",
+                          "LinkSet.set_joint_positions")
         lib.opx_linkset_set_joint_positions(self, values.ctypes.data, len(values),
                                             _base(base_pose))
 
+    @api("LinkSet.set_active_joint_positions")
+    def set_active_joint_positions(self, positions: ArrayLike,
+                                   base_pose: Optional[PoseLike] = None) -> None:
+        """Forward kinematics from the active joints alone:
+        active_joint_count values in the order of active_joint_names
+        (mimic joints follow their leaders; fixed, floating and planar
+        joints need none), the root link at base_pose (None: identity).
+        The poses equal those of set_joint_positions with the same values
+        in model order.  Raises InvalidArgumentError for another count or
+        a bad value; on error nothing changes."""
+        values = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1)
+        lib.opx_linkset_set_active_joint_positions(self, values.ctypes.data, len(values),
+                                                   _base(base_pose))
+
     @api("LinkSet.set_named_joint_positions")
-    def set_named_joint_positions(self, positions: Dict[str, float],
+    def set_named_joint_positions(self, positions: Mapping[str, float],
                                   base_pose: Optional[PoseLike] = None) -> None:
         """Forward kinematics with only the joints of the {name: position}
-        mapping changed; the others keep their last values (initially 0).
+        mapping changed (any subset); the others keep their last values
+        (initially 0).  Naming the active joints alone sets every pose;
+        values of mimic, fixed, floating and planar joints are ignored.
         An unknown name is an InvalidArgumentError naming it."""
         names = [name.encode() for name in positions]
         array = (ctypes.c_char_p * max(len(names), 1))(*names)
@@ -144,6 +209,13 @@ class RobotModel:
         """The joint positions in model order, as FK uses them (mimic
         joints: their computed value; fixed, floating, planar: 0)."""
         return read_array(lib.opx_linkset_get_joint_positions, self)
+
+    @property
+    @api("LinkSet.active_joint_positions")
+    def active_joint_positions(self) -> np.ndarray:
+        """The active joints' positions, in the order of
+        active_joint_names (set_active_joint_positions takes them back)."""
+        return self.joint_positions[self.active_joints]
 
     @api("LinkSet.disable_never_colliding_pairs")
     def disable_never_colliding_pairs(self, samples: int = 10000, seed: int = 1,

@@ -165,7 +165,8 @@ class QueryKeywords(unittest.TestCase):
         arm, tree, query = load_arm(), scatter_map(), octoprox.Query()
         rows = np.zeros((2, 7))
         shared = dict(unknown_policy=octoprox.UNKNOWN_OCCUPIED, occupancy_threshold=0.6,
-                      obstacle_geometry=octoprox.OBSTACLE_POINT_EXTENTS)
+                      obstacle_geometry=octoprox.OBSTACLE_POINT_EXTENTS,
+                      joint_order=octoprox.JOINTS_ACTIVE)
         self.assert_reaches(query._configuration_requests,
                             lambda **k: query.check_configurations(tree, arm, rows, **k),
                             dict(shared, self_collision=True, distance_cutoff=0.5))

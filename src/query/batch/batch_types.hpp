@@ -5,6 +5,7 @@
 #include "query/collision_types.hpp"
 #include "query/distance_types.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -12,15 +13,32 @@
 
 namespace octoprox {
 
-// `count` rows of `joint_count` doubles (model order), `stride` bytes
-// apart (never 0: the shims resolve a packed stride).  Rows are copied
-// out, so the caller's array needs no alignment.
+// `count` rows of `joint_count` doubles, `stride` bytes apart (never 0:
+// the shims resolve a packed stride), in model order, or holding the
+// active joints alone (`active`: their model indices, joint_count of them).
+// Rows are copied out, so the caller's array needs no alignment.
 struct JointRows {
     const unsigned char *bytes = nullptr;
     size_t count = 0, joint_count = 0, stride = 0;
+    const std::vector<uint32_t> *active = nullptr;  // nullptr: rows in model order
+    size_t active_model_count = 0;                   // with `active`: the model's joint count
 
-    void read(size_t row, double *out) const {
+    // The values read() gives: the model's joint count.
+    size_t model_count() const { return active != nullptr ? active_model_count : joint_count; }
+
+    // Row `row` as the caller holds it: joint_count values.
+    void read_values(size_t row, double *out) const {
         std::memcpy(out, bytes + row * stride, joint_count * sizeof(double));
+    }
+
+    // Row `row` in model order: model_count() values, those of the
+    // joints a row of active joints leaves out 0 (FK reads none of them).
+    void read(size_t row, double *out) const {
+        if (active == nullptr) return read_values(row, out);
+        std::fill(out, out + active_model_count, 0.0);
+        const unsigned char *values = bytes + row * stride;
+        for (size_t i = 0; i < joint_count; ++i)
+            std::memcpy(&out[(*active)[i]], values + i * sizeof(double), sizeof(double));
     }
 };
 

@@ -14,7 +14,7 @@ constexpr double kSurelyApart = 1e-6;
 
 ConfigurationAnswer BatchWorker::check(const SensorOctree &tree, const JointRows &rows, const BasePoses &bases,
                                        size_t row, const ConfigurationSettings &settings) {
-    row_.resize(rows.joint_count);
+    row_.resize(rows.model_count());
     rows.read(row, row_.data());
     const LinkSet &posed = robot_.pose(row_.data(), bases.at(row));
     if (settings.distance) return with_distance(tree, posed, settings);

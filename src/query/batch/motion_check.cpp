@@ -118,7 +118,7 @@ void check_motions(BatchWorkers &workers, const SensorOctree &tree, const LinkSe
     std::vector<uint64_t> steps(count);
     {
         MotionScratch scratch;
-        scratch.start.resize(starts.joint_count), scratch.goal.resize(goals.joint_count);
+        scratch.start.resize(starts.model_count()), scratch.goal.resize(goals.model_count());
         for (size_t m = 0; m < count; ++m) {
             starts.read(m, scratch.start.data()), goals.read(m, scratch.goal.data());
             double largest = 0.0;
@@ -132,7 +132,7 @@ void check_motions(BatchWorkers &workers, const SensorOctree &tree, const LinkSe
     std::vector<MotionScratch> scratches(tasks);
     split_items(tasks, count, [&](size_t task, size_t begin, size_t end) {
         MotionScratch &scratch = scratches[task];
-        scratch.start.resize(starts.joint_count), scratch.goal.resize(goals.joint_count);
+        scratch.start.resize(starts.model_count()), scratch.goal.resize(goals.model_count());
         for (size_t m = begin; m < end; ++m) {
             starts.read(m, scratch.start.data()), goals.read(m, scratch.goal.data());
             const MotionAnswer answer = check_motion(workers[task], scratch, tree, scratch.start.data(),
