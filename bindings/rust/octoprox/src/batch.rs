@@ -1,12 +1,15 @@
 //! Many configurations and joint-space motions per call
 //! (`include/octoprox/batch.h`).  Joint vectors are rows of every joint of
 //! a robot made from URDF, in model order (as
-//! [`LinkSet::set_joint_positions`] takes them), packed one after the other
-//! in one slice.  The robot is only read (`&LinkSet`): forward kinematics
-//! runs on the query's own copies, so other threads may use the same robot.
+//! [`LinkSet::set_joint_positions`] takes them), or with
+//! [`JointOrder::Active`] rows of the active joints alone (as
+//! [`LinkSet::set_active_joint_positions`] takes them), packed one after
+//! the other in one slice.  The robot is only read (`&LinkSet`): forward
+//! kinematics runs on the query's own copies, so other threads may use the
+//! same robot.
 //!
 //! ```
-//! use octoprox::{BasePoses, BatchRequest, InsertMode, InsertOptions, LinkSet, Octree,
+//! use octoprox::{BasePoses, BatchRequest, InsertMode, InsertOptions, JointOrder, LinkSet, Octree,
 //!                OctreeOptions, Query, QueryOptions, UrdfOptions};
 //!
 //! // A 1 m arm turning about z at the origin; its tip a sphere at x = 1.
@@ -25,11 +28,15 @@
 //! let answers = query.check_configurations(&map, &robot, &rows, BasePoses::Origin, &request)?;
 //! assert_eq!(answers.collided, [false, true, false]);
 //! assert_eq!(answers.distances[1], 0.0);
+//! // The same rows as active joints: here every joint is active, so the
+//! // two orders are one.
+//! let active = BatchRequest { joint_order: JointOrder::Active, ..request };
+//! assert_eq!(query.check_configurations(&map, &robot, &rows, BasePoses::Origin, &active)?, answers);
 //! # Ok::<(), octoprox::Error>(())
 //! ```
 use crate::batch_types::fraction;
 use crate::error::{check, Error, Result};
-use crate::{sys, BatchRequest, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query};
+use crate::{sys, BatchRequest, JointOrder, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query};
 use std::ptr;
 
 /// Where the robot's root link is (map frame) for each row.
@@ -73,12 +80,16 @@ pub struct MotionAnswers {
     pub first_fractions: Vec<Option<f64>>,
 }
 
-/// Rows of `values` for the robot: the row count, each row `joints` values.
-fn row_count(robot: &LinkSet, values: &[f64], what: &str) -> Result<(usize, usize)> {
-    let joints = robot.joint_count()? as usize;
+/// Rows of `values` for the robot: the row count, each row `joints` values
+/// (the active joints with [`JointOrder::Active`], else every joint).
+fn row_count(robot: &LinkSet, values: &[f64], order: JointOrder, what: &str) -> Result<(usize, usize)> {
+    let (joints, kind) = match order {
+        JointOrder::Active => (robot.active_joint_count()? as usize, "active joints"),
+        JointOrder::ByCount | JointOrder::Model => (robot.joint_count()? as usize, "joints"),
+    };
     if (joints == 0 && !values.is_empty()) || (joints > 0 && values.len() % joints != 0) {
         return Err(Error::invalid(
-            format!("{what}: {} values are not rows of the robot's {joints} joints", values.len()),
+            format!("{what}: {} values are not rows of the robot's {joints} {kind}", values.len()),
         ));
     }
     Ok((if joints == 0 { 0 } else { values.len() / joints }, joints))
@@ -91,8 +102,9 @@ fn flags(bytes: Vec<u8>) -> Vec<bool> {
 impl Query {
     /// Checks many configurations of `robot` against `tree` in one call:
     /// `rows` holds N joint vectors (N x joint count values, model order;
-    /// else an invalid argument), the root link placed by `bases` (map
-    /// frame).  `request.max_threads` workers split them (1, the default:
+    /// with `request.joint_order` [`JointOrder::Active`], N x active joint
+    /// count values, the active joints; else an invalid argument), the
+    /// root link placed by `bases` (map frame).  `request.max_threads` workers split them (1, the default:
     /// the calling thread; 0: every core); the answers do not depend on it.
     /// `request.self_collision` also checks the robot against itself,
     /// `request.compute_distance` gives each configuration's minimum
@@ -101,7 +113,7 @@ impl Query {
     pub fn check_configurations(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64],
                                 bases: BasePoses<'_>, request: &BatchRequest)
         -> Result<ConfigurationAnswers> {
-        let (count, joints) = row_count(robot, rows, "Query::check_configurations: rows")?;
+        let (count, joints) = row_count(robot, rows, request.joint_order, "Query::check_configurations: rows")?;
         let mut collided = vec![0u8; count];
         let mut distances = vec![0.0; if request.compute_distance { count } else { 0 }];
         let request = request.to_c();
@@ -121,7 +133,9 @@ impl Query {
     }
 
     /// Checks the straight joint-space motion from `start` to `goal` (joint
-    /// vectors in model order) at configurations no joint step farther apart
+    /// vectors of every joint in model order or of the active joints, told
+    /// by their length unless `request.joint_order` insists on one) at
+    /// configurations no joint step farther apart
     /// than `request.resolution` (rad or m); the root link at `base` (map
     /// frame; `None`: the origin).  With `request.compute_cost` the swept
     /// cost's boxes are then read with [`Query::cost_boxes`].
@@ -146,12 +160,14 @@ impl Query {
     }
 
     /// Checks many motions (a planner's edges): row m of `starts` to row m
-    /// of `goals` (equal lengths, rows of the robot's joints), split over
+    /// of `goals` (equal lengths, rows of the robot's joints, or of its
+    /// active joints with `request.joint_order` [`JointOrder::Active`]),
+    /// split over
     /// `request.max_threads` workers, as [`Query::check_motion`] checks one
     /// (without cost), the root link placed by `bases` (map frame).
     pub fn check_motions(&mut self, tree: &Octree, robot: &LinkSet, starts: &[f64], goals: &[f64],
                          bases: BasePoses<'_>, request: &MotionRequest) -> Result<MotionAnswers> {
-        let (count, joints) = row_count(robot, starts, "Query::check_motions: starts")?;
+        let (count, joints) = row_count(robot, starts, request.joint_order, "Query::check_motions: starts")?;
         if goals.len() != starts.len() {
             return Err(Error::invalid(
                 format!("Query::check_motions: {} start values but {} goal values", starts.len(), goals.len()),

@@ -5,15 +5,17 @@
 //! library's defaults.
 //!
 //! ```
-//! use octoprox::{BatchRequest, MotionRequest, ObstacleGeometry};
+//! use octoprox::{BatchRequest, JointOrder, MotionRequest, ObstacleGeometry};
 //!
 //! let batch = BatchRequest { compute_distance: true, max_threads: 0, ..Default::default() };
 //! assert!(!batch.self_collision && batch.obstacle_geometry == ObstacleGeometry::Cells);
+//! let active_rows = BatchRequest { joint_order: JointOrder::Active, ..Default::default() };
+//! assert_ne!(active_rows.joint_order, BatchRequest::default().joint_order); // ByCount
 //! let coarse = MotionRequest { resolution: 0.05, ..Default::default() };
 //! assert!(coarse.resolution > MotionRequest::default().resolution); // 0.01
 //! ```
 use crate::enums::{flag, is_set};
-use crate::{sys, ObstacleGeometry, UnknownPolicy};
+use crate::{sys, JointOrder, ObstacleGeometry, UnknownPolicy};
 
 /// How [`crate::Query::check_configurations`] checks its rows.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,6 +43,11 @@ pub struct BatchRequest {
     /// What an occupied cell is as an obstacle (default
     /// [`ObstacleGeometry::Cells`]).
     pub obstacle_geometry: ObstacleGeometry,
+    /// What a row holds: [`JointOrder::Active`] for rows of the active
+    /// joints ([`crate::LinkSet::active_joint_names`]);
+    /// [`JointOrder::ByCount`] (the default) and [`JointOrder::Model`]
+    /// read rows of every joint in model order.
+    pub joint_order: JointOrder,
 }
 
 impl Default for BatchRequest {
@@ -54,6 +61,7 @@ impl Default for BatchRequest {
             distance_cutoff: c.distance_cutoff,
             max_threads: c.max_threads,
             obstacle_geometry: ObstacleGeometry::from_raw(c.obstacle_geometry).unwrap_or_default(),
+            joint_order: JointOrder::from_raw(c.joint_order).unwrap_or_default(),
         }
     }
 }
@@ -68,6 +76,7 @@ impl BatchRequest {
             distance_cutoff: self.distance_cutoff,
             max_threads: self.max_threads,
             obstacle_geometry: self.obstacle_geometry.raw(),
+            joint_order: self.joint_order.raw(),
             ..Default::default()
         }
     }
@@ -108,6 +117,12 @@ pub struct MotionRequest {
     /// What an occupied cell is as an obstacle (default
     /// [`ObstacleGeometry::Cells`]).
     pub obstacle_geometry: ObstacleGeometry,
+    /// What start and goal hold: [`JointOrder::ByCount`] (the default)
+    /// tells by their length in [`crate::Query::check_motion`] and reads
+    /// rows of every joint in [`crate::Query::check_motions`];
+    /// [`JointOrder::Active`] the active joints, [`JointOrder::Model`]
+    /// every joint.
+    pub joint_order: JointOrder,
 }
 
 impl Default for MotionRequest {
@@ -125,6 +140,7 @@ impl Default for MotionRequest {
             region_min: c.region_min,
             region_max: c.region_max,
             obstacle_geometry: ObstacleGeometry::from_raw(c.obstacle_geometry).unwrap_or_default(),
+            joint_order: JointOrder::from_raw(c.joint_order).unwrap_or_default(),
         }
     }
 }
@@ -143,6 +159,7 @@ impl MotionRequest {
             region_min: self.region_min,
             region_max: self.region_max,
             obstacle_geometry: self.obstacle_geometry.raw(),
+            joint_order: self.joint_order.raw(),
             ..Default::default()
         }
     }
@@ -205,5 +222,14 @@ mod tests {
         assert_eq!(batch.to_c().obstacle_geometry, sys::OPX_OBSTACLE_POINT_EXTENTS);
         let motion = MotionRequest { obstacle_geometry: extents, ..Default::default() };
         assert_eq!(motion.to_c().obstacle_geometry, sys::OPX_OBSTACLE_POINT_EXTENTS);
+    }
+
+    #[test]
+    fn joint_order_reaches_batch_and_motion_requests() {
+        let batch = BatchRequest { joint_order: JointOrder::Active, ..Default::default() };
+        assert_eq!(batch.to_c().joint_order, sys::OPX_JOINTS_ACTIVE);
+        let motion = MotionRequest { joint_order: JointOrder::Model, ..Default::default() };
+        assert_eq!(motion.to_c().joint_order, sys::OPX_JOINTS_MODEL);
+        assert_eq!(JointOrder::from_raw(sys::OPX_JOINTS_BY_COUNT), Some(JointOrder::ByCount));
     }
 }

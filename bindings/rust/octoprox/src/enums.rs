@@ -147,8 +147,30 @@ macro_rules! default_variant {
     )*};
 }
 
+c_enum! {
+    /// What a row of joint values holds in the batch queries
+    /// ([`crate::BatchRequest::joint_order`],
+    /// [`crate::MotionRequest::joint_order`]).
+    JointOrder {
+        /// Told by the row's length (the default): the joint count means
+        /// every joint in model order, the active joint count the active
+        /// joints alone.  Never ambiguous: the two counts are equal only
+        /// when every joint is active, and the two orders are then one.
+        /// The calls taking rows as one flat slice
+        /// ([`crate::Query::check_configurations`],
+        /// [`crate::Query::check_motions`]) cannot tell a row's length
+        /// from it: there this reads rows of the joint count.
+        ByCount = sys::OPX_JOINTS_BY_COUNT,
+        /// Every joint, in model order ([`crate::LinkSet::set_joint_positions`]).
+        Model = sys::OPX_JOINTS_MODEL,
+        /// The active joints alone, in model order
+        /// ([`crate::LinkSet::set_active_joint_positions`]).
+        Active = sys::OPX_JOINTS_ACTIVE,
+    }
+}
+
 default_variant!(UnknownPolicy::Free, Engine::Direct, InsertMode::Raycast,
-                 ObstacleGeometry::Cells, MapFormat::Auto);
+                 ObstacleGeometry::Cells, MapFormat::Auto, JointOrder::ByCount);
 
 /// A set of [`CellClass`]es, to choose which leaves
 /// [`crate::Octree::leaves`] returns.  Built from one class, with `|`, from

@@ -5,7 +5,9 @@
 //! * [`Octree`]: the map (insert sensor frames: [`Points`] or a
 //!   [`DepthImage`]; classify, leaves, files).
 //! * [`LinkSet`]: the robot (links, [`Shape`]s, paddings, poses), built by
-//!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK).
+//!   hand or from URDF ([`LinkSet::from_urdf_file`], joints and FK, from
+//!   every joint or from the active joints alone:
+//!   [`LinkSet::set_active_joint_positions`]).
 //! * [`Query`]: one per thread; [`Query::collide`], [`Query::distance`],
 //!   [`Query::path`]; many configurations and motions per call
 //!   ([`Query::check_configurations`], [`Query::check_motions`]); the robot
@@ -21,9 +23,10 @@
 //! with `Default` (the C library's own defaults) and struct update syntax
 //! (`..Default::default()`); classes and switches are enums
 //! ([`CellClass`], [`UnknownPolicy`], [`Engine`], [`InsertMode`],
-//! [`ObstacleGeometry`]), flags are `bool`.  Every fallible call returns
-//! [`Result`], whose [`Error`] has the C status as an [`ErrorKind`] and the
-//! library's message naming the function and the argument.
+//! [`ObstacleGeometry`], [`JointOrder`]), flags are `bool`.  Every fallible
+//! call returns [`Result`], whose [`Error`] has the C status as an
+//! [`ErrorKind`] and the library's message naming the function and the
+//! argument.
 //!
 //! Threads: `Octree` and `LinkSet` are `Send + Sync` (any number of
 //! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
@@ -52,6 +55,7 @@ mod cloud;
 mod depth;
 mod enums;
 mod error;
+mod joints;
 mod linkset;
 mod map_types;
 mod octree;
@@ -67,7 +71,7 @@ pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
 pub use batch_types::{BatchRequest, MotionRequest, MotionResult};
 pub use cloud::{read_point_cloud, CloudEncoding, CloudFormat, PointCloud, PointCloudInfo};
 pub use depth::{camera_intrinsics, CameraIntrinsics, DepthImage};
-pub use enums::{CellClass, CellClasses, Engine, InsertMode, MapFormat, ObstacleGeometry,
+pub use enums::{CellClass, CellClasses, Engine, InsertMode, JointOrder, MapFormat, ObstacleGeometry,
                 UnknownPolicy};
 pub use error::{status_name, Error, ErrorKind, Result};
 pub use linkset::{LinkSet, Shape, ShapeKind};
@@ -101,7 +105,8 @@ pub mod consts {
         OPX_ENGINE_AMORTIZED, OPX_ENGINE_DIRECT, OPX_ERROR_BUFFER_TOO_SMALL, OPX_ERROR_CORRUPT,
         OPX_ERROR_INTERNAL, OPX_ERROR_INVALID_ARGUMENT, OPX_ERROR_IO, OPX_ERROR_OUT_OF_MEMORY,
         OPX_ERROR_UNSUPPORTED, OPX_ERROR_VERSION, OPX_FORMAT_AUTO, OPX_FORMAT_BT, OPX_FORMAT_OT,
-        OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
+        OPX_INSERT_ENDPOINTS, OPX_INSERT_RAYCAST, OPX_JOINTS_ACTIVE, OPX_JOINTS_BY_COUNT,
+        OPX_JOINTS_MODEL, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
         OPX_JOINT_FLOATING, OPX_JOINT_NONE, OPX_JOINT_PLANAR, OPX_JOINT_PRISMATIC, OPX_JOINT_REVOLUTE, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
         OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OBSTACLE_CELLS, OPX_OBSTACLE_POINT_EXTENTS,
         OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64,

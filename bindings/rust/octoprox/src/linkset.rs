@@ -14,6 +14,7 @@
 //! assert_eq!((robot.link_count()?, robot.shape_count(hand)?), (1, 2));
 //! assert_eq!(robot.find_link("hand")?, hand);
 //! assert_eq!(robot.pose(hand)?.position, [0.5, 0.0, 1.0]);
+//! assert_eq!(robot.poses()?, [pose_at(0.5, 0.0, 1.0)]); // every link at once
 //! # Ok::<(), octoprox::Error>(())
 //! ```
 use crate::error::{c_string, check, to_c_string, Error, ErrorKind, Result};
@@ -303,6 +304,17 @@ impl LinkSet {
         // SAFETY: const call.
         check(unsafe { sys::opx_linkset_get_pose(self.raw, link, &mut pose) })?;
         Ok(pose)
+    }
+
+    /// Every link's pose in the map frame, in link order (element i is
+    /// [`LinkSet::pose`] of link i).
+    pub fn poses(&self) -> Result<Vec<Pose>> {
+        let mut poses = vec![Pose::default(); self.link_count()? as usize];
+        let mut count = 0usize;
+        // SAFETY: poses holds poses.len() packed poses; const call.
+        check(unsafe { sys::opx_linkset_get_poses(self.raw, poses.as_mut_ptr(), poses.len(), &mut count) })?;
+        poses.truncate(count);
+        Ok(poses)
     }
 
     pub(crate) fn as_raw(&self) -> *const sys::opx_linkset {

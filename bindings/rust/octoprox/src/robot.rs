@@ -1,7 +1,9 @@
 //! Link sets from URDF, their joints and forward kinematics
 //! (`include/octoprox/robot.h`).  Joint positions are in radians (revolute,
 //! continuous) or metres (prismatic), in the URDF's joint order ("model
-//! order", fixed joints included).
+//! order", fixed joints included), or the active joints' alone
+//! ([`LinkSet::set_active_joint_positions`]: the moving joints that mimic
+//! none).
 //!
 //! ```
 //! use octoprox::{JointType, LinkSet, UrdfOptions};
@@ -211,7 +213,8 @@ impl LinkSet {
     /// joint count), the root link at `base` in the map frame (None:
     /// identity); then every link pose is set.  Values of fixed, floating
     /// and planar joints are ignored, a mimic joint follows its master;
-    /// values must be finite and within +-1e6.  A set not made from URDF:
+    /// values must be finite and within +-1e6.  A vector of the active
+    /// joints alone goes to [`LinkSet::set_active_joint_positions`].  A set not made from URDF:
     /// [`crate::ErrorKind::Unsupported`].  On error nothing changes.
     pub fn set_joint_positions(&mut self, positions: &[f64], base: Option<&Pose>) -> Result<()> {
         let base = base.map_or(ptr::null(), |pose| pose as *const Pose);
@@ -222,8 +225,10 @@ impl LinkSet {
         })
     }
 
-    /// FK with only the named joints changed (the others keep their values,
-    /// initially 0); an unknown name is an invalid argument naming it.
+    /// FK with only the named joints changed (any subset; the others keep
+    /// their values, initially 0): naming the active joints alone sets
+    /// every pose, values of mimic, fixed, floating and planar joints are
+    /// ignored.  An unknown name is an invalid argument naming it.
     pub fn set_named_joint_positions(&mut self, named: &[(&str, f64)], base: Option<&Pose>)
         -> Result<()> {
         let mut names = Vec::with_capacity(named.len());
