@@ -2,7 +2,6 @@
 
 #include "base/error.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -124,11 +123,6 @@ void JointTree::find_active_joints() {
 // mimics none: an active joint, or one that does not move (value 0).
 void JointTree::set_active_commanded(const double *values) {
     for (size_t i = 0; i < active_.size(); ++i) commanded_[active_[i]] = values[i];
-}
-
-void JointTree::scatter_active(const double *active, double *model) const {
-    std::fill(model, model + joints_.size(), 0.0);
-    for (size_t i = 0; i < active_.size(); ++i) model[active_[i]] = active[i];
 }
 
 void JointTree::update_positions() { positions_from(commanded_.data(), positions_.data()); }

@@ -56,9 +56,6 @@ public:
     // prismatic joints that mimic none), in model order: every joint's
     // position follows from theirs.
     const std::vector<uint32_t> &active_joints() const { return active_; }
-    // Model-order values from `active` (active_joints().size() values):
-    // each active joint's value at its model index, 0 elsewhere.
-    void scatter_active(const double *active, double *model) const;
 
     // The values callers set, per joint; FK reads positions().
     void set_commanded(const double *values);  // joint_count() values
