@@ -5,7 +5,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 
 namespace octoprox {
 namespace {
@@ -17,13 +20,14 @@ class YamlScene {
 public:
     YamlScene(const std::string &source, World &world) : source_(source), world_(world) {}
 
-    void read_document(const YAML::Node &root);
+    // `first_line`: where the document starts in the source (0-based).
+    void read_document(const YAML::Node &root, int first_line);
 
 private:
     // A node's line (1-based), or its parent's when the node is missing.
     SceneWhere where(const YAML::Node &node, const std::string &field, const YAML::Node &parent = YAML::Node()) const {
         const YAML::Mark mark = node.IsDefined() ? node.Mark() : parent.IsDefined() ? parent.Mark() : YAML::Mark::null_mark();
-        return SceneWhere{&source_, mark.is_null() ? 0 : mark.line + 1, field};
+        return SceneWhere{&source_, mark.is_null() ? 0 : first_line_ + mark.line + 1, field};
     }
     // A missing key (or a key of what is no map) gives an undefined node,
     // which every reader checks (IsDefined) before asking anything else.
@@ -46,6 +50,7 @@ private:
 
     const std::string &source_;
     World &world_;
+    int first_line_ = 0;
 };
 
 double YamlScene::number(const YAML::Node &node, const std::string &field, const YAML::Node &parent) {
@@ -217,9 +222,13 @@ SceneObjectUpdate YamlScene::object(const YAML::Node &node, const std::string &f
     return u;
 }
 
-void YamlScene::read_document(const YAML::Node &root) {
-    if (!root.IsMap())
-        scene_fail(where(root, ""), "not a map (a moveit_msgs/PlanningScene or PlanningSceneWorld)");
+void YamlScene::read_document(const YAML::Node &root, int first_line) {
+    first_line_ = first_line;
+    if (!root.IsMap()) {
+        SceneWhere at = where(root, "");
+        at.line = std::max(at.line, first_line + 1);
+        scene_fail(at, "not a map (a moveit_msgs/PlanningScene or PlanningSceneWorld)");
+    }
     const YAML::Node world = child(root, "world");
     const bool scene = world.IsDefined();
     if (!scene && !child(root, "collision_objects").IsDefined())
@@ -240,24 +249,75 @@ void YamlScene::read_document(const YAML::Node &root) {
     for (size_t i = 0; i < objects.size(); ++i) apply_update(world_, object(objects[i], format("%s[%zu]", field.c_str(), i)));
 }
 
+// A document of the text: from a "---" line (or the start) to the next.
+struct YamlPiece {
+    std::string text;
+    int first_line = 0;  // 0-based, in the whole text
+    bool has_content = false;  // more than markers, comments and blanks
+};
+
+bool starts_with(const std::string &line, const char *prefix) { return line.compare(0, std::strlen(prefix), prefix) == 0; }
+
+bool is_marker(const std::string &line) {
+    return starts_with(line, "---") && (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3])));
+}
+
+// Whether a line holds YAML content: not blank, a comment, "...", or a
+// "---" marker with nothing after it.
+bool holds_content(const std::string &line) {
+    size_t at = is_marker(line) ? 3 : 0;
+    if (at == 0 && starts_with(line, "...")) return false;
+    while (at < line.size() && std::isspace(static_cast<unsigned char>(line[at]))) ++at;
+    return at < line.size() && line[at] != '#';
+}
+
+// yaml-cpp 0.7's LoadAll can loop for ever, allocating, on malformed
+// input (a line starting with ','), so each document is parsed alone with
+// Load, the text cut at the "---" markers (which YAML does not allow at
+// the start of a line inside content).
+std::vector<YamlPiece> split_documents(const std::string &text) {
+    std::vector<YamlPiece> pieces(1);
+    int line_number = 0;
+    for (size_t at = 0; at < text.size(); ++line_number) {
+        const size_t end = std::min(text.find('\n', at), text.size());
+        const std::string line = text.substr(at, end - at);
+        if (is_marker(line) && (pieces.back().has_content || !pieces.back().text.empty())) {
+            pieces.emplace_back();
+            pieces.back().first_line = line_number;
+        }
+        pieces.back().text += line + "\n";
+        pieces.back().has_content = pieces.back().has_content || holds_content(line);
+        at = end + 1;
+    }
+    return pieces;
+}
+
+[[noreturn]] void yaml_fail(const std::string &source, const YAML::Exception &error, int first_line, const char *what) {
+    const SceneWhere at{&source, error.mark.is_null() ? 0 : first_line + error.mark.line + 1, ""};
+    scene_fail(at, what + error.msg);
+}
+
 }  // namespace
 
 void read_scene_yaml(const std::string &text, const std::string &source, World &world) {
-    std::vector<YAML::Node> documents;
-    try {
-        documents = YAML::LoadAll(text);
-    } catch (const YAML::Exception &error) {
-        const SceneWhere at{&source, error.mark.is_null() ? 0 : error.mark.line + 1, ""};
-        scene_fail(at, "not valid YAML: " + error.msg);
-    }
-    if (documents.empty() || (documents.size() == 1 && documents.front().IsNull())) scene_fail(SceneWhere{&source, 0, ""}, "holds no YAML document");
     YamlScene scene(source, world);
-    try {
-        for (const YAML::Node &document : documents) scene.read_document(document);
-    } catch (const YAML::Exception &error) {
-        const SceneWhere at{&source, error.mark.is_null() ? 0 : error.mark.line + 1, ""};
-        scene_fail(at, "unreadable YAML: " + error.msg);
+    bool any = false;
+    for (const YamlPiece &piece : split_documents(text)) {
+        if (!piece.has_content) continue;
+        any = true;
+        YAML::Node document;
+        try {
+            document = YAML::Load(piece.text);
+        } catch (const YAML::Exception &error) {
+            yaml_fail(source, error, piece.first_line, "not valid YAML: ");
+        }
+        try {
+            scene.read_document(document, piece.first_line);
+        } catch (const YAML::Exception &error) {
+            yaml_fail(source, error, piece.first_line, "unreadable YAML: ");
+        }
     }
+    if (!any) scene_fail(SceneWhere{&source, 0, ""}, "holds no YAML document");
 }
 
 }  // namespace octoprox

@@ -154,6 +154,32 @@ static void test_malformed_yaml(void **state) {
     EXPECT_YAML("", OPX_ERROR_CORRUPT, "no YAML document");
 }
 
+static uint32_t yaml_object_count(const char *text) {
+    opx_world *world = NULL;
+    uint32_t count = 0;
+    assert_ok(opx_world_load_scene_memory(text, strlen(text), OPX_SCENE_FORMAT_YAML, &world));
+    assert_ok(opx_world_get_object_count(world, &count));
+    opx_world_destroy(world);
+    return count;
+}
+
+#define BALL(id, diff) \
+    "world:\n  collision_objects:\n    - id: " id "\n      primitives: [{type: 2, dimensions: [0.1]}]\n" \
+    "is_diff: " diff "\n"
+
+/* Messages one after the other, as `ros2 topic echo` prints them. */
+static void test_yaml_documents(void **state) {
+    (void)state;
+    assert_int_equal(yaml_object_count(BALL("a", "false") "---\n"), 1);
+    assert_int_equal(yaml_object_count("---\n" BALL("a", "false") "---\n" BALL("b", "true") "---\n"), 2);
+    assert_int_equal(yaml_object_count(BALL("a", "true") "...\n---\n" BALL("b", "false")), 1);  /* not a diff: replaces */
+    assert_int_equal(yaml_object_count("# a comment\n--- {collision_objects: []}\n"), 0);
+    EXPECT_YAML(BALL("a", "true") "---\n" BALL("b", "true") "---\n" OBJECT_HEAD "      operation: 9\n",
+                OPX_ERROR_CORRUPT, "line 16", "world.collision_objects[0].operation");
+    /* A document starting with ',' (which makes yaml-cpp's LoadAll loop for ever) fails at once. */
+    EXPECT_YAML(BALL("a", "true") "---\n,\n", OPX_ERROR_CORRUPT, "line 7", "not a map");
+}
+
 #define TEXT_HEAD "scene\n* post\n0 0 0\n0 0 0 1\n1\n"
 
 static void test_malformed_scene_text(void **state) {
@@ -193,6 +219,7 @@ int main(void) {
         cmocka_unit_test(test_scene_text_with_object_poses),
         cmocka_unit_test(test_scene_text_without_object_poses),
         cmocka_unit_test(test_malformed_yaml),
+        cmocka_unit_test(test_yaml_documents),
         cmocka_unit_test(test_malformed_scene_text),
         cmocka_unit_test(test_malformed_files_name_the_file),
     };
