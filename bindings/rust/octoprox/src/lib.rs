@@ -13,6 +13,10 @@
 //!   ([`Query::check_configurations`], [`Query::check_motions`]); the robot
 //!   against itself: [`Query::self_collide`], [`Query::self_distance`] over
 //!   the pairs [`LinkSet::set_pair_enabled`] (and an SRDF) leave enabled.
+//! * [`World`]: known objects beside the map (tables, shelves, walls),
+//!   built by hand or read from MoveIt planning scenes
+//!   ([`World::from_scene_file`]); [`Query::collide_with_world`] and
+//!   [`Query::distance_with_world`] check them with or without a map.
 //! * [`read_point_cloud`]: PCD and PLY files as points (the library's
 //!   readers).
 //!
@@ -23,14 +27,15 @@
 //! with `Default` (the C library's own defaults) and struct update syntax
 //! (`..Default::default()`); classes and switches are enums
 //! ([`CellClass`], [`UnknownPolicy`], [`Engine`], [`InsertMode`],
-//! [`ObstacleGeometry`], [`JointOrder`]), flags are `bool`.  Every fallible
+//! [`ObstacleGeometry`], [`JointOrder`], [`SceneFormat`]), flags are
+//! `bool`.  Every fallible
 //! call returns [`Result`], whose [`Error`] has the C status as an
 //! [`ErrorKind`] and the library's message naming the function and the
 //! argument.
 //!
-//! Threads: `Octree` and `LinkSet` are `Send + Sync` (any number of
-//! threads may query them through `&`); a `Query` is `Send` but not `Sync`:
-//! use one per thread.
+//! Threads: `Octree`, `LinkSet` and `World` are `Send + Sync` (any number
+//! of threads may query them through `&`); a `Query` is `Send` but not
+//! `Sync`: use one per thread.
 //!
 //! ```
 //! use octoprox::{pose_at, CollisionRequest, InsertOptions, LinkSet, Octree, Query, Shape};
@@ -66,6 +71,7 @@ mod results;
 mod robot;
 mod self_collision;
 mod self_types;
+mod world;
 
 pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
 pub use batch_types::{BatchRequest, MotionRequest, MotionResult};
@@ -84,6 +90,7 @@ pub use results::{CollisionResult, Contact, CostBox, DistanceResult, PathResult,
 pub use robot::{JointInfo, JointType, UrdfOptions};
 pub use self_types::{PairSamplingOptions, PairSamplingResult, SelfCollisionRequest,
                      SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
+pub use world::{SceneFormat, World};
 
 use octoprox_sys as sys;
 
@@ -109,7 +116,7 @@ pub mod consts {
         OPX_JOINTS_MODEL, OPX_JOINT_CONTINUOUS, OPX_JOINT_FIXED,
         OPX_JOINT_FLOATING, OPX_JOINT_NONE, OPX_JOINT_PLANAR, OPX_JOINT_PRISMATIC, OPX_JOINT_REVOLUTE, OPX_MASK_ALL_KNOWN, OPX_MASK_FREE,
         OPX_MASK_OCCUPIED, OPX_MASK_UNCERTAIN, OPX_OBSTACLE_CELLS, OPX_OBSTACLE_POINT_EXTENTS,
-        OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64,
+        OPX_OK, OPX_SCALAR_FLOAT32, OPX_SCALAR_FLOAT64, OPX_SCENE_FORMAT_TEXT, OPX_SCENE_FORMAT_YAML,
         OPX_SCALAR_UINT16, OPX_UNKNOWN_FREE, OPX_UNKNOWN_OCCUPIED,
         OPX_VERSION_MAJOR, OPX_VERSION_MINOR, OPX_VERSION_PATCH,
     };

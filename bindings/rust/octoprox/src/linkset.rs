@@ -101,7 +101,7 @@ impl<'a> Shape<'a> {
     }
 
     /// The C description; it borrows the vertices and triangles.
-    fn to_c(self) -> sys::opx_shape {
+    pub(crate) fn to_c(self) -> sys::opx_shape {
         let mut c = sys::opx_shape { pose: self.pose, ..Default::default() };
         match self.kind {
             ShapeKind::Sphere { radius } => (c.kind, c.radius) = (sys::OPX_SHAPE_SPHERE, radius),
@@ -125,12 +125,13 @@ impl<'a> Shape<'a> {
         c
     }
 
-    /// A shape the library describes; the slices borrow its memory.
+    /// A shape the library describes; the slices borrow its memory.  An
+    /// unknown kind is an error naming `what` (the caller).
     ///
     /// # Safety
     /// `c.vertices` must hold `vertex_count` packed points and `c.indices`
     /// `triangle_count` packed triangles, valid for `'a`.
-    unsafe fn from_c(c: &sys::opx_shape) -> Result<Shape<'a>> {
+    pub(crate) unsafe fn from_c(c: &sys::opx_shape, what: &str) -> Result<Shape<'a>> {
         let kind = match c.kind {
             sys::OPX_SHAPE_SPHERE => ShapeKind::Sphere { radius: c.radius },
             sys::OPX_SHAPE_BOX => ShapeKind::Box { size: c.size },
@@ -143,7 +144,7 @@ impl<'a> Shape<'a> {
             },
             kind => {
                 return Err(Error::of_kind(ErrorKind::Version,
-                                          format!("LinkSet::shape: unknown shape kind {}", kind)))
+                                          format!("{}: unknown shape kind {}", what, kind)))
             }
         };
         Ok(Shape { kind, pose: c.pose })
@@ -250,7 +251,7 @@ impl LinkSet {
         // is unchanged, which the borrow of self guarantees.
         unsafe {
             check(sys::opx_linkset_get_shape(self.raw, link, shape, &mut c))?;
-            Shape::from_c(&c)
+            Shape::from_c(&c, "LinkSet::shape")
         }
     }
 

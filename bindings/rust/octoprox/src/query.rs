@@ -1,6 +1,6 @@
 //! Query contexts (`opx_query`): collision, distance and path queries
 //! against a map (self-collision: `self_collision.rs`; many configurations
-//! per call: `batch.rs`).
+//! per call: `batch.rs`; with world objects: `world.rs`).
 //!
 //! ```
 //! use octoprox::{pose_at, CollisionRequest, InsertMode, InsertOptions, LinkSet, Octree,
@@ -86,20 +86,27 @@ impl Query {
     }
 
     /// Does the link set (enabled links, padded, at their poses in the map
-    /// frame) collide with the octree?  Touching collides.  Contacts and
+    /// frame) collide with the octree?  Touching collides.  With known
+    /// objects beside the map: [`Query::collide_with_world`].  Contacts and
     /// cost boxes are then read with [`Query::contacts`] and
     /// [`Query::cost_boxes`] until the next collision or path query.  An
     /// invalid request field is an [`crate::ErrorKind::InvalidArgument`]
     /// naming it.
     pub fn collide(&mut self, tree: &Octree, links: &LinkSet, request: &CollisionRequest)
         -> Result<CollisionResult> {
+        self.collide_tree(tree.as_raw(), links, request)
+    }
+
+    /// [`Query::collide`] on a live octree handle, or NULL with a world set
+    /// ([`Query::collide_with_world`]).
+    pub(crate) fn collide_tree(&mut self, tree: *const sys::opx_octree, links: &LinkSet,
+                               request: &CollisionRequest) -> Result<CollisionResult> {
         let request = request.to_c();
         let mut out = sys::opx_collision_result::default();
         (self.contact_count, self.cost_box_count) = (0, 0);
-        // SAFETY: live handles; tree and links are only read.
-        check(unsafe {
-            sys::opx_query_collide(self.raw, tree.as_raw(), links.as_raw(), &request, &mut out)
-        })?;
+        // SAFETY: live handles (tree may be NULL: the library checks it);
+        // tree and links are only read.
+        check(unsafe { sys::opx_query_collide(self.raw, tree, links.as_raw(), &request, &mut out) })?;
         (self.contact_count, self.cost_box_count) =
             (out.contact_count as usize, out.cost_box_count as usize);
         Ok(CollisionResult::from_c(&out))
@@ -134,15 +141,22 @@ impl Query {
     }
 
     /// The minimum distance between the enabled links (padding included)
-    /// and the obstacle cells, with witness points in the map frame.
+    /// and the obstacle cells, with witness points in the map frame.  With
+    /// known objects beside the map: [`Query::distance_with_world`].
     pub fn distance(&mut self, tree: &Octree, links: &LinkSet, request: &DistanceRequest)
         -> Result<DistanceResult> {
+        self.distance_tree(tree.as_raw(), links, request)
+    }
+
+    /// [`Query::distance`] on a live octree handle, or NULL with a world
+    /// set ([`Query::distance_with_world`]).
+    pub(crate) fn distance_tree(&mut self, tree: *const sys::opx_octree, links: &LinkSet,
+                                request: &DistanceRequest) -> Result<DistanceResult> {
         let request = request.to_c();
         let mut out = sys::opx_distance_result::default();
-        // SAFETY: live handles; tree and links are only read.
-        check(unsafe {
-            sys::opx_query_distance(self.raw, tree.as_raw(), links.as_raw(), &request, &mut out)
-        })?;
+        // SAFETY: live handles (tree may be NULL: the library checks it);
+        // tree and links are only read.
+        check(unsafe { sys::opx_query_distance(self.raw, tree, links.as_raw(), &request, &mut out) })?;
         DistanceResult::from_c(&out)
     }
 

@@ -1,6 +1,8 @@
 //! What a [`crate::Query`] answers: collision, distance and path results,
 //! the contacts and cost boxes a query holds, and what its engine holds.
-//! Points are in the map frame, lengths in metres, costs in m^3.
+//! Points are in the map frame, lengths in metres, costs in m^3.  With a
+//! [`crate::World`] an obstacle is a cell or an object: contacts and
+//! distances say which (`object`).
 //!
 //! ```
 //! use octoprox::{pose_at, CollisionRequest, DistanceRequest, InsertMode, InsertOptions, LinkSet,
@@ -67,7 +69,8 @@ impl QueryStats {
 /// The answer of [`crate::Query::collide`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CollisionResult {
-    /// Some enabled link (padding included) touches an obstacle cell.
+    /// Some enabled link (padding included) touches an obstacle cell (or,
+    /// with a world, an enabled object).
     pub collided: bool,
     /// Contacts the query holds ([`crate::Query::contacts`]).
     pub contact_count: u64,
@@ -99,8 +102,9 @@ impl CollisionResult {
     }
 }
 
-/// A shape of a link touching an obstacle cell (a cube in the map frame;
-/// touching means a distance `<=` the padding).
+/// A shape of a link touching an obstacle cell (a cube in the map frame)
+/// or a world object's shape ([`Contact::object`]); touching means a
+/// distance `<=` the padding.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
     /// The link's index in the link set.
@@ -126,6 +130,13 @@ pub struct Contact {
     /// With `compute_penetration`: the contact point, midway between the
     /// shape's deepest point and where it leaves the cell, map frame.
     pub position: [f64; 3],
+    /// The world object touched (its index in the [`crate::World`]), or
+    /// `None` for an octree cell.  For an object the cell fields are zeros
+    /// (`cell_class` [`CellClass::Unknown`]).
+    pub object: Option<u32>,
+    /// The object's shape touched (its index within the object); 0 for a
+    /// cell.
+    pub object_shape: u32,
 }
 
 impl Contact {
@@ -140,6 +151,8 @@ impl Contact {
             depth: c.depth,
             normal: c.normal,
             position: c.position,
+            object: object_index(c.object),
+            object_shape: c.object_shape,
         })
     }
 }
@@ -182,7 +195,8 @@ impl CostBox {
 }
 
 /// The answer of [`crate::Query::distance`]: the closest pair of an
-/// enabled link (padding included) and an obstacle cell.
+/// enabled link (padding included) and an obstacle cell (or, with a world,
+/// an enabled object's shape: [`DistanceResult::object`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DistanceResult {
     /// An obstacle lies within the cutoff; else `distance` is the cutoff
@@ -212,6 +226,13 @@ pub struct DistanceResult {
     pub cell_probability: f64,
     /// Exact shape-to-cell distances computed (a cost measure).
     pub narrow_tests: u64,
+    /// The nearest world object (its index in the [`crate::World`];
+    /// `point_on_cell` then lies on it and the cell fields are zeros), or
+    /// `None` for a cell.
+    pub object: Option<u32>,
+    /// The object's nearest shape (its index within the object); 0 for a
+    /// cell.
+    pub object_shape: u32,
 }
 
 impl DistanceResult {
@@ -229,8 +250,15 @@ impl DistanceResult {
             cell_size: c.cell_size,
             cell_probability: c.cell_probability,
             narrow_tests: c.narrow_tests,
+            object: object_index(c.object),
+            object_shape: c.object_shape,
         })
     }
+}
+
+/// A world object's index as the C API gives it, -1 meaning a cell.
+fn object_index(raw: i32) -> Option<u32> {
+    u32::try_from(raw).ok()
 }
 
 /// The answer of [`crate::Query::path`].
