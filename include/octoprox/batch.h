@@ -27,9 +27,12 @@
  * with opx_linkset_add_link after loading keep their current pose.
  *
  * A configuration collides when an enabled link touches an obstacle cell
- * (the rules of opx_query_collide: padding included, touching collides),
- * or, with self_collision, when two links of an enabled pair touch
- * (opx_query_self_collide).  The answers are those of the single calls at
+ * (the rules of opx_query_collide: padding included, touching collides)
+ * or, on a query with a world (world.h, opx_query_set_world), one of its
+ * enabled objects, or, with self_collision, when two links of an enabled
+ * pair touch (opx_query_self_collide).  With a world the octree may be
+ * NULL (the objects alone); distances are then the least over the octree
+ * and the objects, and the objects add no cost.  The answers are those of the single calls at
  * the same joint positions (opx_linkset_set_joint_positions, then
  * opx_query_collide / opx_query_distance), whatever the thread count.
  *

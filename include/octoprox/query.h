@@ -333,6 +333,8 @@ OPX_API opx_status opx_path_result_init(opx_path_result *result, size_t size);
  * (pose_stride 0: sizeof(opx_pose); waypoint_stride 0: links x pose_stride).
  * The link set itself is not moved.  Without distance or cost the check
  * stops at the first colliding waypoint.  request may be NULL (defaults).
+ * On a query with a world (world.h) each waypoint is also checked against
+ * its objects, which add no cost; tree may then be NULL (no compute_cost).
  */
 OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree,
                                   const opx_linkset *links, const opx_pose *poses,

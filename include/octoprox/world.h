@@ -11,8 +11,9 @@
  * none of its triangles (use a convex hull or boxes for a solid).
  *
  * Queries check a link set against a world's enabled objects when the
- * world is set on the query context (opx_query_set_world): collision and
- * distance then answer for the octree and the objects together.
+ * world is set on the query context (opx_query_set_world): collision,
+ * distance, paths, batches and motions then answer for the octree and the
+ * objects together.
  *
  * Indices are positions: object i is the i-th of the world; removing an
  * object moves every later one down by one.  Names need not be unique
@@ -140,10 +141,18 @@ OPX_API opx_status opx_world_load_scene_memory(const void *data, size_t size, in
  *    the least per link; signed_distance measures the objects' overlap by
  *    the same exact kernels as self-collision.  abs_err and rel_err apply
  *    to the octree; objects are measured exactly.
- * Paths, batches, motions and caller boxes (opx_query_path,
- * opx_query_check_*, opx_query_*_boxes) do not check objects: on a query
- * with a world they give OPX_ERROR_UNSUPPORTED.  Self-collision ignores
- * the world.
+ *  - paths, batches and motions (opx_query_path, opx_query_check_*) check
+ *    every waypoint or configuration against the octree and the objects
+ *    by the same rules: collided when either is touched, distances the
+ *    least of both; the octree may be NULL there too.  Objects have no
+ *    cost (they are known): a path's or motion's cost comes from the
+ *    octree alone, and compute_cost needs one.  Batch workers share the
+ *    world read-only (its object tree is built once, on the calling
+ *    thread, before the work is split), so the answers do not depend on
+ *    max_threads.
+ * Caller boxes (opx_query_*_boxes) do not check objects: on a query with a
+ * world they give OPX_ERROR_UNSUPPORTED.  Self-collision ignores the
+ * world.
  */
 OPX_API opx_status opx_query_set_world(opx_query *query, const opx_world *world);
 

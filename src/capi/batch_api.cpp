@@ -12,14 +12,16 @@ using namespace octoprox::capi;
 
 namespace {
 
-void require_handles(const opx_query *query, const opx_octree *tree, const opx_linkset *links) {
+// The octree the call reads: null when tree is NULL and the query has a
+// world (its objects alone).
+Obstacles require_handles(const opx_query *query, const opx_octree *tree, const opx_linkset *links) {
     require_pointer(query, "query");
-    require_pointer(tree, "tree");
+    const SensorOctree *map = map_of(query, tree);
     require_pointer(links, "links");
-    refuse_world(query);
+    return Obstacles{map, query->context.world()};
 }
 
-ConfigurationSettings configuration_settings(const opx_batch_request &r, const SensorOctree &tree) {
+ConfigurationSettings configuration_settings(const opx_batch_request &r, const SensorOctree *tree) {
     ConfigurationSettings s;
     s.collision = yes_no_settings(r.unknown_policy, r.occupancy_threshold, tree);
     s.self_collision = r.self_collision != 0;
@@ -42,9 +44,9 @@ opx_collision_request as_collision_request(const opx_motion_request &r) {
     return c;
 }
 
-MotionSettings motion_settings(const opx_motion_request &r, const SensorOctree &tree) {
+MotionSettings motion_settings(const opx_motion_request &r, const SensorOctree *tree) {
     MotionSettings s;
-    s.collision = collision_settings(as_collision_request(r), tree);
+    s.collision = settings_for_map(as_collision_request(r), tree);
     if (!(r.resolution > 0.0) || !std::isfinite(r.resolution))
         throw_invalid(format("request->resolution is %g; a finite step > 0 (rad or m) is needed", r.resolution));
     s.resolution = r.resolution;
@@ -67,9 +69,10 @@ opx_motion_result motion_result_to_abi(const MotionAnswer &a, bool cost, const Q
     return out;
 }
 
-MotionAnswer run_motion(opx_query *query, const opx_octree *tree, const opx_linkset *links, const JointTree &joints,
-                        const double *start, const double *goal, const Pose &base, const MotionSettings &settings) {
-    query->batch.prepare(1, links->links, joints);
+MotionAnswer run_motion(opx_query *query, const Obstacles &obstacles, const opx_linkset *links,
+                        const JointTree &joints, const double *start, const double *goal, const Pose &base,
+                        const MotionSettings &settings) {
+    query->batch.prepare(1, links->links, joints, obstacles.world);
     BatchWorker &worker = query->batch[0];
     MotionScratch scratch;
     double largest = 0.0;
@@ -77,9 +80,9 @@ MotionAnswer run_motion(opx_query *query, const opx_octree *tree, const opx_link
     require_motion_steps(steps, largest, settings.resolution, "the motion from start to goal");
     const auto n = static_cast<uint64_t>(steps);
     if (settings.collision.cost)
-        return check_motion_with_cost(worker, query->context, *tree->tree, links->links, start, goal, n, base,
+        return check_motion_with_cost(worker, query->context, *obstacles.tree, links->links, start, goal, n, base,
                                       settings);
-    return check_motion(worker, scratch, *tree->tree, start, goal, n, base, settings);
+    return check_motion(worker, scratch, obstacles.tree, start, goal, n, base, settings);
 }
 
 }  // namespace
@@ -105,17 +108,17 @@ OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_oc
                                                   size_t base_pose_stride, const opx_batch_request *request,
                                                   uint8_t *out_collided, double *out_distances, size_t capacity) {
     return guard(__func__, [&] {
-        require_handles(query, tree, links);
+        const Obstacles obstacles = require_handles(query, tree, links);
         opx_batch_request merged = OPX_BATCH_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
-        const ConfigurationSettings settings = configuration_settings(merged, *tree->tree);
+        const ConfigurationSettings settings = configuration_settings(merged, obstacles.tree);
         require_rows(configuration_count, "configuration_count", capacity);
         require_pointer(out_collided, "out_collided");
         if (settings.distance) require_pointer(out_distances, "out_distances");
         const JointRows rows = read_joint_rows(positions, configuration_count, layout, stride, "positions");
         const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, configuration_count);
-        check_configurations(query->batch, *tree->tree, links->links, *layout.joints, rows, bases, settings,
+        check_configurations(query->batch, obstacles, links->links, *layout.joints, rows, bases, settings,
                              ConfigurationOutputs{out_collided, out_distances});
         return OPX_OK;
     });
@@ -126,19 +129,19 @@ OPX_API opx_status opx_query_check_motion(opx_query *query, const opx_octree *tr
                                           const opx_pose *base_pose, const opx_motion_request *request,
                                           opx_motion_result *out_result) {
     return guard(__func__, [&] {
-        require_handles(query, tree, links);
+        const Obstacles obstacles = require_handles(query, tree, links);
         require_out_struct(out_result, "out_result");
         opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
-        const MotionSettings settings = motion_settings(merged, *tree->tree);
+        const MotionSettings settings = motion_settings(merged, obstacles.tree);
         const JointRows starts = read_joint_rows(start, 1, layout, 0, "start");
         const JointRows goals = read_joint_rows(goal, 1, layout, 0, "goal");
         const BasePoses base = read_base_poses(base_pose, base_pose == nullptr ? 0 : 1, 0, 1);
         std::vector<double> from(starts.model_count()), to(goals.model_count());
         starts.read(0, from.data()), goals.read(0, to.data());
         const MotionAnswer answer =
-            run_motion(query, tree, links, *layout.joints, from.data(), to.data(), base.at(0), settings);
+            run_motion(query, obstacles, links, *layout.joints, from.data(), to.data(), base.at(0), settings);
         write_versioned(out_result, motion_result_to_abi(answer, settings.collision.cost, query->context),
                         "out_result");
         return OPX_OK;
@@ -152,11 +155,11 @@ OPX_API opx_status opx_query_check_motions(opx_query *query, const opx_octree *t
                                            const opx_motion_request *request, uint8_t *out_collided,
                                            double *out_first_fractions, size_t capacity) {
     return guard(__func__, [&] {
-        require_handles(query, tree, links);
+        const Obstacles obstacles = require_handles(query, tree, links);
         opx_motion_request merged = OPX_MOTION_REQUEST_INIT;
         read_versioned(request, merged, "request");
         const JointLayout layout = read_joint_layout(links, joint_count, merged.joint_order);
-        const MotionSettings settings = motion_settings(merged, *tree->tree);
+        const MotionSettings settings = motion_settings(merged, obstacles.tree);
         if (settings.collision.cost)
             throw_invalid("request->compute_cost is 1; the swept cost is given by opx_query_check_motion only");
         require_rows(motion_count, "motion_count", capacity);
@@ -164,7 +167,7 @@ OPX_API opx_status opx_query_check_motions(opx_query *query, const opx_octree *t
         const JointRows from = read_joint_rows(starts, motion_count, layout, stride, "starts");
         const JointRows to = read_joint_rows(goals, motion_count, layout, stride, "goals");
         const BasePoses bases = read_base_poses(base_poses, base_pose_count, base_pose_stride, motion_count);
-        check_motions(query->batch, *tree->tree, links->links, *layout.joints, from, to, bases, settings, out_collided,
+        check_motions(query->batch, obstacles, links->links, *layout.joints, from, to, bases, settings, out_collided,
                       out_first_fractions);
         return OPX_OK;
     });

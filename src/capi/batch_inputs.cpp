@@ -1,4 +1,5 @@
 #include "capi/batch_inputs.hpp"
+#include "capi/world_handle.hpp"
 
 #include "capi/checks.hpp"
 #include "capi/request_checks.hpp"
@@ -110,12 +111,12 @@ void require_rows(size_t rows, const char *count_argument, size_t capacity) {
                        format("capacity %zu is smaller than %s, %zu", capacity, count_argument, rows));
 }
 
-CollisionSettings yes_no_settings(int32_t unknown_policy, double occupancy_threshold, const SensorOctree &tree) {
-    CollisionSettings settings;
-    settings.unknown_occupied = read_unknown_policy(unknown_policy, "request->unknown_policy");
-    settings.threshold_log_odds = read_threshold_log_odds(occupancy_threshold, tree, "request->occupancy_threshold");
-    settings.max_contacts = 0;
-    return settings;
+CollisionSettings yes_no_settings(int32_t unknown_policy, double occupancy_threshold, const SensorOctree *tree) {
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    request.unknown_policy = unknown_policy;
+    request.occupancy_threshold = occupancy_threshold;
+    request.max_contacts = 0;
+    return settings_for_map(request, tree);
 }
 
 }  // namespace octoprox::capi

@@ -34,7 +34,8 @@ BasePoses read_base_poses(const opx_pose *poses, size_t count, size_t stride, si
 // (OPX_ERROR_BUFFER_TOO_SMALL).
 void require_rows(size_t rows, const char *count_argument, size_t capacity);
 
-// Collision settings of a yes/no check (no contacts, no cost).
-CollisionSettings yes_no_settings(int32_t unknown_policy, double occupancy_threshold, const SensorOctree &tree);
+// Collision settings of a yes/no check (no contacts, no cost); tree null:
+// the fields checked, the map's not used (a query with a world alone).
+CollisionSettings yes_no_settings(int32_t unknown_policy, double occupancy_threshold, const SensorOctree *tree);
 
 }  // namespace octoprox::capi

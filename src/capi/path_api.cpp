@@ -8,9 +8,9 @@ using namespace octoprox::capi;
 
 namespace {
 
-PathSettings path_settings(const opx_path_request &merged, const SensorOctree &tree) {
+PathSettings path_settings(const opx_path_request &merged, const SensorOctree *tree) {
     PathSettings settings;
-    settings.collision = collision_settings(collision_request_of(merged), tree);
+    settings.collision = settings_for_map(collision_request_of(merged), tree);
     settings.distance = merged.compute_distance != 0;
     settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
     settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
@@ -72,16 +72,15 @@ OPX_API opx_status opx_query_path(opx_query *query, const opx_octree *tree, cons
                                   opx_path_result *out_result) {
     return guard(__func__, [&] {
         require_pointer(query, "query");
-        require_pointer(tree, "tree");
+        const SensorOctree *map = map_of(query, tree);
         require_pointer(links, "links");
-        refuse_world(query);
         require_out_struct(out_result, "out_result");
         opx_path_request merged = OPX_PATH_REQUEST_INIT;
         read_versioned(request, merged, "request");
-        const PathSettings settings = path_settings(merged, *tree->tree);
+        const PathSettings settings = path_settings(merged, map);
         const std::vector<Pose> all =
             read_path_poses(poses, waypoint_count, links->links.link_count(), pose_stride, waypoint_stride);
-        const PathOutcome o = query->context.path(*tree->tree, links->links, all, waypoint_count, settings);
+        const PathOutcome o = query->context.path(map, links->links, all, waypoint_count, settings);
         write_versioned(out_result, path_result_to_abi(o, query->context), "out_result");
         return OPX_OK;
     });

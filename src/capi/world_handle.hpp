@@ -21,9 +21,8 @@ namespace octoprox::capi {
 // `object` checked against the world's objects; throws invalid argument.
 uint32_t require_object(const opx_world *world, uint32_t object);
 
-// Paths, batches, motions and caller boxes check no world objects: on a
-// query with a world set they throw OPX_ERROR_UNSUPPORTED rather than
-// answer for the octree alone.
+// Caller boxes check no world objects: on a query with a world set they
+// throw OPX_ERROR_UNSUPPORTED rather than answer for the boxes alone.
 void refuse_world(const opx_query *query);
 
 // The octree a collision or distance query reads: tree's, or null when
@@ -35,6 +34,9 @@ const SensorOctree *map_of(const opx_query *query, const opx_octree *tree);
 // compute_cost, which needs a map, is refused.
 CollisionSettings collision_settings_without_map(const opx_collision_request &request);
 DistanceSettings distance_settings_without_map(const opx_distance_request &request);
+// collision_settings(request, *map), or collision_settings_without_map when
+// map is null.
+CollisionSettings settings_for_map(const opx_collision_request &request, const SensorOctree *map);
 
 // The public form of a contact with a world object (cell fields zero).
 opx_contact world_contact_to_abi(const WorldContact &contact);

@@ -36,6 +36,10 @@ CollisionSettings collision_settings_without_map(const opx_collision_request &r)
     return settings;
 }
 
+CollisionSettings settings_for_map(const opx_collision_request &request, const SensorOctree *map) {
+    return map != nullptr ? collision_settings(request, *map) : collision_settings_without_map(request);
+}
+
 DistanceSettings distance_settings_without_map(const opx_distance_request &r) {
     DistanceSettings settings = read_distance_bounds(r);
     read_unknown_policy(r.unknown_policy, "request->unknown_policy");

@@ -43,12 +43,12 @@ DistanceAnswer QueryContext::distance(const SensorOctree *tree, const LinkSet &l
     return answer;
 }
 
-PathOutcome QueryContext::path(const SensorOctree &tree, const LinkSet &links, const std::vector<Pose> &poses,
+PathOutcome QueryContext::path(const SensorOctree *tree, const LinkSet &links, const std::vector<Pose> &poses,
                                size_t waypoints, const PathSettings &settings) {
-    resolution_ = tree.params().resolution;
+    if (tree != nullptr) resolution_ = tree->params().resolution;
     contacts_.clear();
     world_contacts_.clear();
-    return path_.run(PathRequest{tree, links, poses, waypoints, settings}, *engine_, cost_, cost_boxes_);
+    return path_.run(PathRequest{tree, world_, links, poses, waypoints, settings}, *engine_, cost_, cost_boxes_);
 }
 
 AmortizedEngine &QueryContext::amortized_engine() {

@@ -66,8 +66,10 @@ public:
     // none); it must outlive its use and not change during a query.
     void set_world(const World *world) { world_ = world; }
     const World *world() const { return world_; }
-    // `poses`: waypoint-major, one pose per link (path_query.hpp).
-    PathOutcome path(const SensorOctree &tree, const LinkSet &links, const std::vector<Pose> &poses,
+    // `poses`: waypoint-major, one pose per link (path_query.hpp).  With a
+    // world, each waypoint is also checked against its objects; tree may
+    // then be null (no cost without it).
+    PathOutcome path(const SensorOctree *tree, const LinkSet &links, const std::vector<Pose> &poses,
                      size_t waypoints, const PathSettings &settings);
 
     // A caller's boxes as the map (amortized engine only; an octree query

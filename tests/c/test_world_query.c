@@ -2,7 +2,7 @@
  * Collision and distance queries with a world set (opx_query_set_world):
  * objects alone (no octree), objects beside the one-cell map, contact and
  * result fields, max_contacts across both, disabled and removed objects,
- * per-link and signed distances, and the calls that refuse a world.
+ * per-link and signed distances, and what queries with a world refuse.
  */
 #include "opx_query_test.h"
 
@@ -184,17 +184,15 @@ static void test_calls_refusing_a_world(void **state) {
     bad.cutoff = NAN;
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_query_distance", "cutoff", opx_query_distance(query, NULL, links, &bad, &dr));
     const opx_pose pose = pose_at(1, 1, 1);
+    opx_path_request path_cost = OPX_PATH_REQUEST_INIT;
+    path_cost.compute_cost = 1;
     opx_path_result pr = OPX_PATH_RESULT_INIT;
-    expect_failure(OPX_ERROR_UNSUPPORTED, "opx_query_path", "opx_query_set_world",
-                   opx_query_path(query, tree, links, &pose, 1, 0, 0, NULL, &pr));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_query_path", "compute_cost",
+                   opx_query_path(query, NULL, links, &pose, 1, 0, 0, &path_cost, &pr));
     expect_failure(OPX_ERROR_UNSUPPORTED, "opx_query_collide_boxes", "opx_query_set_world",
                    opx_query_collide_boxes(query, links, NULL, &cr));
     expect_failure(OPX_ERROR_UNSUPPORTED, "opx_query_distance_boxes", "opx_query_set_world",
                    opx_query_distance_boxes(query, links, NULL, &dr));
-    const double q = 0.0;
-    uint8_t collided = 0;
-    expect_failure(OPX_ERROR_UNSUPPORTED, "opx_query_check_configurations", "opx_query_set_world",
-                   opx_query_check_configurations(query, tree, links, &q, 1, 0, 0, NULL, 0, 0, NULL, &collided, NULL, 0));
     /* Self-collision ignores the world. */
     opx_self_collision_result sr = OPX_SELF_COLLISION_RESULT_INIT;
     assert_ok(opx_query_self_collide(query, links, NULL, &sr));

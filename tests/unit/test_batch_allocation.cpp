@@ -2,13 +2,15 @@
 // a call has warmed its workers, a call of 400 rows allocates what a call
 // of 40 rows does (nothing for configurations on one thread: the workers,
 // their posed robots and contexts are kept), with map and self checks and
-// distances, for a 7-joint arm with a mesh tool.
+// distances, beside world objects and without a map, for a 7-joint arm
+// with a mesh tool.
 #include "alloc_counter.hpp"
 #include "unit_scenes.hpp"
 
 #include "query/batch/configuration_batch.hpp"
 #include "query/batch/motion_check.hpp"
 #include "robot/urdf_model.hpp"
+#include "world/world.hpp"
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,7 @@ struct Scene {
     RobotModel robot;
     std::unique_ptr<SensorOctree> tree;
     std::vector<double> rows;
+    World world;  // boxes and spheres in the arm's reach
 
     Scene() {
         UrdfInput input;
@@ -63,19 +66,27 @@ struct Scene {
         settings.raycast = false;
         unit::insert_xyz(*tree, xyz, settings);
         for (int i = 0; i < 400 * 7; ++i) rows.push_back(joint(rng));
+        for (int i = 0; i < 24; ++i) {
+            Pose at;
+            at.translation = Vec3(spread(rng), spread(rng), height(rng));
+            ShapeDef shape;
+            shape.kind = i % 2 ? ShapeKind::kBox : ShapeKind::kSphere;
+            shape.radius = 0.1, shape.half_size = Vec3(0.1, 0.05, 0.08);
+            world.add_shape(world.add_object("thing", at), std::move(shape));
+        }
     }
     JointRows joint_rows(size_t count) const { return JointRows{reinterpret_cast<const unsigned char *>(rows.data()), count, 7, 56}; }
 };
 
 // Allocations of one call of check_configurations over `count` rows.
 uint64_t configuration_allocations(Scene &scene, BatchWorkers &workers, const ConfigurationSettings &settings,
-                                   size_t count) {
+                                   size_t count, const Obstacles &obstacles) {
     BasePoses bases;
     bases.poses.emplace_back();
     std::vector<uint8_t> collided(count);
     std::vector<double> distances(count);
     const uint64_t before = unit::allocation_count();
-    check_configurations(workers, *scene.tree, scene.links, scene.robot.joints, scene.joint_rows(count), bases,
+    check_configurations(workers, obstacles, scene.links, scene.robot.joints, scene.joint_rows(count), bases,
                          settings, ConfigurationOutputs{collided.data(), distances.data()});
     return unit::allocation_count() - before;
 }
@@ -83,18 +94,20 @@ uint64_t configuration_allocations(Scene &scene, BatchWorkers &workers, const Co
 TEST(BatchAllocation, ConfigurationsAllocateNothingOnceWarm) {
     Scene scene;
     BatchWorkers workers{ContextOptions()};
-    for (int kind = 0; kind < 4; ++kind) {
+    const Obstacles kinds[3] = {{scene.tree.get(), nullptr}, {scene.tree.get(), &scene.world}, {nullptr, &scene.world}};
+    for (int k = 0; k < 12; ++k) {
         ConfigurationSettings settings;
         settings.collision.max_contacts = 0;
-        settings.self_collision = (kind & 1) != 0;
-        settings.distance = (kind & 2) != 0;
-        configuration_allocations(scene, workers, settings, 400);  // warms every path
-        EXPECT_EQ(configuration_allocations(scene, workers, settings, 40), 0u) << "kind " << kind;
-        EXPECT_EQ(configuration_allocations(scene, workers, settings, 400), 0u) << "kind " << kind;
+        settings.self_collision = (k & 1) != 0;
+        settings.distance = (k & 2) != 0;
+        const Obstacles &obstacles = kinds[k / 4];
+        configuration_allocations(scene, workers, settings, 400, obstacles);  // warms every path
+        EXPECT_EQ(configuration_allocations(scene, workers, settings, 40, obstacles), 0u) << "case " << k;
+        EXPECT_EQ(configuration_allocations(scene, workers, settings, 400, obstacles), 0u) << "case " << k;
     }
 }
 
-uint64_t motion_allocations(Scene &scene, BatchWorkers &workers, size_t count) {
+uint64_t motion_allocations(Scene &scene, BatchWorkers &workers, size_t count, const Obstacles &obstacles) {
     MotionSettings settings;
     settings.collision.max_contacts = 0;
     settings.resolution = 0.05;
@@ -107,7 +120,7 @@ uint64_t motion_allocations(Scene &scene, BatchWorkers &workers, size_t count) {
     JointRows goals = starts;
     goals.bytes += 7 * sizeof(double);  // each motion goes to the next row
     const uint64_t before = unit::allocation_count();
-    check_motions(workers, *scene.tree, scene.links, scene.robot.joints, starts, goals, bases, settings,
+    check_motions(workers, obstacles, scene.links, scene.robot.joints, starts, goals, bases, settings,
                   collided.data(), fractions.data());
     return unit::allocation_count() - before;
 }
@@ -115,8 +128,10 @@ uint64_t motion_allocations(Scene &scene, BatchWorkers &workers, size_t count) {
 TEST(BatchAllocation, MotionsAllocatePerCallNotPerMotion) {
     Scene scene;
     BatchWorkers workers{ContextOptions()};
-    motion_allocations(scene, workers, 399);
-    EXPECT_EQ(motion_allocations(scene, workers, 39), motion_allocations(scene, workers, 399));
+    for (const Obstacles &obstacles : {Obstacles{scene.tree.get(), nullptr}, Obstacles{scene.tree.get(), &scene.world}}) {
+        motion_allocations(scene, workers, 399, obstacles);
+        EXPECT_EQ(motion_allocations(scene, workers, 39, obstacles), motion_allocations(scene, workers, 399, obstacles));
+    }
 }
 
 }  // namespace

@@ -42,6 +42,16 @@ struct JointRows {
     }
 };
 
+class SensorOctree;
+class World;
+
+// What a batch checks the robot against: the octree, the world's enabled
+// objects, or both (never neither).
+struct Obstacles {
+    const SensorOctree *tree = nullptr;
+    const World *world = nullptr;
+};
+
 // The root link's pose (map frame): one for every row, or one per row.
 struct BasePoses {
     std::vector<Pose> poses;  // never empty (the shims put the identity when none is given)

@@ -12,7 +12,7 @@ constexpr double kSurelyApart = 1e-6;
 
 }  // namespace
 
-ConfigurationAnswer BatchWorker::check(const SensorOctree &tree, const JointRows &rows, const BasePoses &bases,
+ConfigurationAnswer BatchWorker::check(const SensorOctree *tree, const JointRows &rows, const BasePoses &bases,
                                        size_t row, const ConfigurationSettings &settings) {
     row_.resize(rows.model_count());
     rows.read(row, row_.data());
@@ -23,12 +23,12 @@ ConfigurationAnswer BatchWorker::check(const SensorOctree &tree, const JointRows
     return answer;
 }
 
-bool BatchWorker::collides_at(const SensorOctree &tree, const double *commanded, const Pose &base,
+bool BatchWorker::collides_at(const SensorOctree *tree, const double *commanded, const Pose &base,
                               const CollisionSettings &collision, bool self_collision) {
     return collides(tree, robot_.pose(commanded, base), collision, self_collision);
 }
 
-bool BatchWorker::collides(const SensorOctree &tree, const LinkSet &posed, const CollisionSettings &collision,
+bool BatchWorker::collides(const SensorOctree *tree, const LinkSet &posed, const CollisionSettings &collision,
                            bool self_collision) {
     if (context_.collide(tree, posed, collision).outcome.collided) return true;
     if (!self_collision) return false;
@@ -40,7 +40,7 @@ bool BatchWorker::collides(const SensorOctree &tree, const LinkSet &posed, const
 // The distance first; the collision test only when the distance leaves
 // touching open.  With self-collision, the same for the self distance, the
 // answer being the nearer of the two.
-ConfigurationAnswer BatchWorker::with_distance(const SensorOctree &tree, const LinkSet &posed,
+ConfigurationAnswer BatchWorker::with_distance(const SensorOctree *tree, const LinkSet &posed,
                                                const ConfigurationSettings &settings) {
     const DistanceAnswer nearest = context_.distance(tree, posed, settings.distance_settings, false);
     ConfigurationAnswer answer;
@@ -63,9 +63,13 @@ void BatchWorker::add_self_distance(const LinkSet &posed, const ConfigurationSet
     answer.collided = context_.self_collide(posed, yes_no).collided;
 }
 
-void BatchWorkers::prepare(size_t count, const LinkSet &links, const JointTree &joints) {
+void BatchWorkers::prepare(size_t count, const LinkSet &links, const JointTree &joints, const World *world) {
+    if (world != nullptr) world->index();
     while (workers_.size() < count) workers_.push_back(std::make_unique<BatchWorker>(options_));
-    for (size_t i = 0; i < count; ++i) workers_[i]->robot().bind(links, joints);
+    for (size_t i = 0; i < count; ++i) {
+        workers_[i]->robot().bind(links, joints);
+        workers_[i]->context().set_world(world);
+    }
 }
 
 }  // namespace octoprox

@@ -1,8 +1,13 @@
 // A batch query's worker: its own query context (engine and scratch) and
 // its own posed copy of the robot, so workers on different threads share
-// nothing but the read-only map and link set.  An opx_query keeps its
-// workers (BatchWorkers) between calls: a warm batch allocates nothing
+// nothing but the read-only map, world and link set.  An opx_query keeps
+// its workers (BatchWorkers) between calls: a warm batch allocates nothing
 // per configuration, and the amortized engine's trees stay built.
+//
+// The octree may be null when a world is set: the objects alone are
+// checked.  The world is only read by the workers: its tree of object
+// shapes, built lazily by the first reader after a change, is built by
+// BatchWorkers::prepare on the caller's thread before the work is split.
 #pragma once
 
 #include "query/batch/batch_types.hpp"
@@ -24,16 +29,16 @@ public:
     // Row `row` of `rows` at its base pose: collided (world, and self with
     // settings.self_collision) and, with settings.distance, the minimum
     // distance.  Without distance it stops at the first contact.
-    ConfigurationAnswer check(const SensorOctree &tree, const JointRows &rows, const BasePoses &bases, size_t row,
+    ConfigurationAnswer check(const SensorOctree *tree, const JointRows &rows, const BasePoses &bases, size_t row,
                               const ConfigurationSettings &settings);
     // The robot posed at `commanded` collides (world, and self when asked)?
-    bool collides_at(const SensorOctree &tree, const double *commanded, const Pose &base,
+    bool collides_at(const SensorOctree *tree, const double *commanded, const Pose &base,
                      const CollisionSettings &collision, bool self_collision);
 
 private:
-    bool collides(const SensorOctree &tree, const LinkSet &posed, const CollisionSettings &collision,
+    bool collides(const SensorOctree *tree, const LinkSet &posed, const CollisionSettings &collision,
                   bool self_collision);
-    ConfigurationAnswer with_distance(const SensorOctree &tree, const LinkSet &posed,
+    ConfigurationAnswer with_distance(const SensorOctree *tree, const LinkSet &posed,
                                       const ConfigurationSettings &settings);
     void add_self_distance(const LinkSet &posed, const ConfigurationSettings &settings, ConfigurationAnswer &answer);
 
@@ -47,8 +52,10 @@ class BatchWorkers {
 public:
     explicit BatchWorkers(const ContextOptions &options) : options_(options) {}
 
-    // `count` workers ready to pose `links` with `joints`.
-    void prepare(size_t count, const LinkSet &links, const JointTree &joints);
+    // `count` workers ready to pose `links` with `joints` and to check the
+    // world's objects (null: none) beside the octree.  The world's object
+    // tree is built here, so the workers only read it.
+    void prepare(size_t count, const LinkSet &links, const JointTree &joints, const World *world);
     BatchWorker &operator[](size_t index) { return *workers_[index]; }
 
 private:

@@ -7,9 +7,9 @@
 
 namespace octoprox {
 
-// Answers every row of `rows` into `out`.  `links` and `joints` are the
-// caller's, read-only.
-void check_configurations(BatchWorkers &workers, const SensorOctree &tree, const LinkSet &links,
+// Answers every row of `rows` into `out`.  `links`, `joints` and the
+// obstacles are the caller's, read-only.
+void check_configurations(BatchWorkers &workers, const Obstacles &obstacles, const LinkSet &links,
                           const JointTree &joints, const JointRows &rows, const BasePoses &bases,
                           const ConfigurationSettings &settings, const ConfigurationOutputs &out);
 

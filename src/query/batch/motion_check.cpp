@@ -75,7 +75,7 @@ void require_motion_steps(double steps, double largest, double resolution, const
                              argument, largest, steps, resolution, kMaxMotionSteps));
 }
 
-MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const SensorOctree &tree,
+MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const SensorOctree *tree,
                           const double *start, const double *goal, uint64_t steps, const Pose &base,
                           const MotionSettings &settings) {
     scratch.sample.resize(worker.robot().joint_count());
@@ -103,18 +103,18 @@ MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, 
     MotionAnswer answer;
     answer.steps = steps;
     answer.samples_checked = steps + 1;
-    answer.path = context.path(tree, links, poses, steps + 1, path);
+    answer.path = context.path(&tree, links, poses, steps + 1, path);
     answer.first_sample = answer.path.first_collision;
     if (settings.self_collision) first_self_collision(worker, scratch, start, goal, base, answer);
     return answer;
 }
 
-void check_motions(BatchWorkers &workers, const SensorOctree &tree, const LinkSet &links, const JointTree &joints,
+void check_motions(BatchWorkers &workers, const Obstacles &obstacles, const LinkSet &links, const JointTree &joints,
                    const JointRows &starts, const JointRows &goals, const BasePoses &bases,
                    const MotionSettings &settings, uint8_t *out_collided, double *out_fractions) {
     const size_t count = starts.count;
     const size_t tasks = task_count(settings.threads, count);
-    workers.prepare(tasks, links, joints);
+    workers.prepare(tasks, links, joints, obstacles.world);
     std::vector<uint64_t> steps(count);
     {
         MotionScratch scratch;
@@ -135,7 +135,7 @@ void check_motions(BatchWorkers &workers, const SensorOctree &tree, const LinkSe
         scratch.start.resize(starts.model_count()), scratch.goal.resize(goals.model_count());
         for (size_t m = begin; m < end; ++m) {
             starts.read(m, scratch.start.data()), goals.read(m, scratch.goal.data());
-            const MotionAnswer answer = check_motion(workers[task], scratch, tree, scratch.start.data(),
+            const MotionAnswer answer = check_motion(workers[task], scratch, obstacles.tree, scratch.start.data(),
                                                      scratch.goal.data(), steps[m], bases.at(m), settings);
             out_collided[m] = answer.collided() ? 1 : 0;
             if (out_fractions != nullptr) out_fractions[m] = answer.fraction();

@@ -50,20 +50,22 @@ double motion_steps(const PosedRobot &robot, MotionScratch &scratch, const doubl
 // An invalid-argument error unless steps <= kMaxMotionSteps.
 void require_motion_steps(double steps, double largest, double resolution, const char *argument);
 
-// One motion, without cost; `steps` from motion_steps.
-MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const SensorOctree &tree,
+// One motion, without cost; `steps` from motion_steps.  The worker is
+// prepared (BatchWorkers::prepare) with the world to check, if any.
+MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const SensorOctree *tree,
                           const double *start, const double *goal, uint64_t steps, const Pose &base,
                           const MotionSettings &settings);
 
 // One motion with the swept cost: every sample's poses (FK on the worker's
-// robot) go through `context`'s path query, whose cost boxes it then holds.
+// robot) go through `context`'s path query (with the context's world), whose
+// cost boxes it then holds.
 MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, const SensorOctree &tree,
                                     const LinkSet &links, const double *start, const double *goal, uint64_t steps,
                                     const Pose &base, const MotionSettings &settings);
 
 // Many motions: row m of `starts` to row m of `goals` (at bases.at(m)),
 // split over settings.threads workers.  out_fractions may be null.
-void check_motions(BatchWorkers &workers, const SensorOctree &tree, const LinkSet &links, const JointTree &joints,
+void check_motions(BatchWorkers &workers, const Obstacles &obstacles, const LinkSet &links, const JointTree &joints,
                    const JointRows &starts, const JointRows &goals, const BasePoses &bases,
                    const MotionSettings &settings, uint8_t *out_collided, double *out_fractions);
 

@@ -75,6 +75,14 @@ WorldCollisionOutcome WorldCollider::collide(const World &world, const LinkSet &
     return out;
 }
 
+bool WorldCollider::collides(const World &world, const LinkSet &links, uint64_t &narrow_tests) {
+    WorldCollisionSettings yes_no;
+    yes_no.max_contacts = 0;
+    const WorldCollisionOutcome o = collide(world, links, yes_no, no_contacts_);
+    narrow_tests += o.narrow_tests;
+    return o.collided;
+}
+
 // Nearest boxes first (the farther child waits on the stack), each pruned
 // by the best distance so far.
 void WorldCollider::nearest(const WorldIndex &index, const PlacedShape &shape, bool signed_distance,

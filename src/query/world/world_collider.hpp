@@ -61,6 +61,10 @@ public:
     WorldDistance distance(const World &world, const LinkSet &links, double bound, bool signed_distance,
                            std::vector<double> *per_link);
 
+    // Yes or no, stopping at the first touching pair (paths, batches and
+    // motions); allocates nothing once its scratch has grown.
+    bool collides(const World &world, const LinkSet &links, uint64_t &narrow_tests);
+
 private:
     // Calls visit(object shape) for each object shape whose box is within
     // the touch tolerance of `shape`'s, until it returns true.
@@ -70,6 +74,7 @@ private:
     void nearest(const WorldIndex &index, const PlacedShape &shape, bool signed_distance, WorldDistance &best);
 
     std::vector<int32_t> stack_;
+    std::vector<WorldContact> no_contacts_;  // collides(): stays empty
 };
 
 }  // namespace octoprox
