@@ -138,6 +138,7 @@ ShapeDef read_shape(Scanner &in, const std::string &field) {
 
 void read_object(Scanner &in, bool poses, World &world) {
     const std::string name = in.rest_of_line();
+    if (name.find('\0') != std::string::npos) in.fail("object", "a '*' line whose name holds a NUL byte");
     SceneObjectUpdate u;
     u.id = name;
     u.where = in.here("object '" + name + "'");

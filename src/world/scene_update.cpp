@@ -67,6 +67,10 @@ void clear_world(World &world) {
 }
 
 void apply_update(World &world, SceneObjectUpdate u) {
+    // Names leave the library as C strings (opx_world_get_object_name):
+    // one holding a NUL byte could not be read back or found.
+    if (u.id.find('\0') != std::string::npos)
+        scene_fail(u.where, "the object's name holds a NUL byte");
     const int64_t found = world.find_object(u.id);
     switch (u.operation) {
     case SceneOperation::kAdd:

@@ -199,6 +199,20 @@ static void test_malformed_scene_text(void **state) {
     EXPECT_TEXT("scene\n* post\n0 0 0\n0 0 0 1\n-1\n", OPX_ERROR_CORRUPT, "line 5", "shape count", "'-1'");
 }
 
+/* Names leave the library as C strings: one holding a NUL byte is refused. */
+static void test_names_holding_a_nul_byte(void **state) {
+    (void)state;
+    EXPECT_YAML("world:\n  collision_objects:\n    - id: \"ball\\0b\"\n      primitives: [{type: 2, dimensions: [0.1]}]\n",
+                OPX_ERROR_CORRUPT, "line 3", "NUL byte");
+    static const char text[] = "scene\n* ball\0b\n1\nsphere\n0.1\n0 0 0\n0 0 0 1\n0 0 0 0\n.\n";
+    opx_world *world = NULL;
+    assert_int_equal(opx_world_load_scene_memory(text, sizeof text - 1, OPX_SCENE_FORMAT_TEXT, &world),
+                     OPX_ERROR_CORRUPT);
+    assert_null(world);
+    assert_non_null(strstr(opx_last_error(), "line 2"));
+    assert_non_null(strstr(opx_last_error(), "NUL byte"));
+}
+
 static void test_malformed_files_name_the_file(void **state) {
     (void)state;
     opx_world *world = NULL;
@@ -221,6 +235,7 @@ int main(void) {
         cmocka_unit_test(test_malformed_yaml),
         cmocka_unit_test(test_yaml_documents),
         cmocka_unit_test(test_malformed_scene_text),
+        cmocka_unit_test(test_names_holding_a_nul_byte),
         cmocka_unit_test(test_malformed_files_name_the_file),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
