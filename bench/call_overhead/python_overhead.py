@@ -5,7 +5,9 @@ The scene of the tests: one occupied 25 cm cell and a 10 cm sphere
 touching it; every call answers "collided" after one exact test, so the
 time is the library's fixed cost per query plus the caller's.  Rounds
 interleave the C program (opx-bench-call-overhead, its own process) and
-the Python calls in this process; each figure is the median of the rounds.
+the Python calls in this process; each figure is the median of the rounds,
+in CPU time of the calling thread (other programs' load on the machine
+counts only through the caches).
 Python is timed two ways: octoprox.Query.collide as users call it, and the
 bare ctypes call of opx_query_collide with everything prepared (what no
 binding built on ctypes can go below).  Rust is not measured: the Rust
@@ -77,33 +79,34 @@ def scene(octoprox):
     return tree, links
 
 
-def python_round(call, calls):
-    """ns per call of call() over `calls` calls."""
-    start = time.perf_counter()
-    for _ in range(calls):
-        call()
-    return 1e9 * (time.perf_counter() - start) / calls
+class PythonCallers:
+    """The two Python callers on the scene, each a loop timing `calls`
+    calls as a user's loop makes them (ns per call, thread CPU time)."""
 
+    def __init__(self, octoprox):
+        from octoprox import _library
+        self.tree, self.links = scene(octoprox)
+        self.query = octoprox.Query()
+        self.bare = _library.unchecked("opx_query_collide")
+        self.result = octoprox.CollisionResult(ctypes.sizeof(octoprox.CollisionResult))
+        assert self.query.collide(self.tree, self.links).collided
+        assert self.bare(self.query._raw, self.tree._raw, self.links._raw, None, self.result) == 0
+        assert self.result.collided
 
-def python_calls(octoprox):
-    """The two Python callers, each checked to answer "collided", and the
-    objects the bare call's handles belong to (keep them alive)."""
-    from octoprox import _library
-    tree, links = scene(octoprox)
-    query = octoprox.Query()
-    collide = query.collide
-    bare = _library.unchecked("opx_query_collide")
-    result = octoprox.CollisionResult(ctypes.sizeof(octoprox.CollisionResult))
-    handles = (query._raw, tree._raw, links._raw)
+    def python_query_collide(self, calls):
+        collide, tree, links = self.query.collide, self.tree, self.links
+        start = time.thread_time_ns()
+        for _ in range(calls):
+            collide(tree, links)
+        return (time.thread_time_ns() - start) / calls
 
-    def api():
-        return collide(tree, links)
-
-    def ctypes_only():
-        return bare(*handles, None, result)
-
-    assert api().collided and ctypes_only() == 0 and result.collided
-    return {"python_query_collide": api, "python_ctypes_call": ctypes_only}, (query, tree, links)
+    def python_ctypes_call(self, calls):
+        bare, result = self.bare, self.result
+        query, tree, links = self.query._raw, self.tree._raw, self.links._raw
+        start = time.thread_time_ns()
+        for _ in range(calls):
+            bare(query, tree, links, None, result)
+        return (time.thread_time_ns() - start) / calls
 
 
 def c_round(program, calls):
@@ -113,16 +116,15 @@ def c_round(program, calls):
 
 
 def measure(args, octoprox):
-    callers, owners = python_calls(octoprox)
-    rounds = {"c": []}
-    rounds.update({name: [] for name in callers})
-    for name, call in callers.items():
-        python_round(call, max(1, args.calls // 10))  # warm-up
+    callers = PythonCallers(octoprox)
+    names = ("python_ctypes_call", "python_query_collide")
+    rounds = {name: [] for name in ("c",) + names}
+    for name in names:
+        getattr(callers, name)(max(1, args.calls // 10))  # warm-up
     for _ in range(args.rounds):
         rounds["c"].append(c_round(args.c_program, args.calls))
-        for name, call in callers.items():
-            rounds[name].append(python_round(call, args.calls))
-    del owners
+        for name in names:
+            rounds[name].append(getattr(callers, name)(args.calls))
     return {name: statistics.median(values) for name, values in rounds.items()}
 
 
