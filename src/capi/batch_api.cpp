@@ -1,6 +1,7 @@
 // C shims: many configurations and joint-space motions per call (batch.h).
 #include "capi/batch_inputs.hpp"
 #include "capi/checks.hpp"
+#include "capi/request_checks.hpp"
 #include "capi/world_handle.hpp"
 #include "query/batch/configuration_batch.hpp"
 #include "query/batch/motion_check.hpp"
@@ -24,10 +25,12 @@ Obstacles require_handles(const opx_query *query, const opx_octree *tree, const 
 ConfigurationSettings configuration_settings(const opx_batch_request &r, const SensorOctree *tree) {
     ConfigurationSettings s;
     s.collision = yes_no_settings(r.unknown_policy, r.occupancy_threshold, tree);
+    s.collision.point_extents = read_obstacle_geometry(r.obstacle_geometry, "request->obstacle_geometry");
     s.self_collision = r.self_collision != 0;
     s.distance = r.compute_distance != 0;
     s.distance_settings.unknown_occupied = s.collision.unknown_occupied;
     s.distance_settings.threshold_log_odds = s.collision.threshold_log_odds;
+    s.distance_settings.point_extents = s.collision.point_extents;
     if (std::isnan(r.distance_cutoff) || r.distance_cutoff < 0.0)
         throw_invalid(format("request->distance_cutoff is %g; 0 (none) or a positive distance is needed",
                              r.distance_cutoff));

@@ -34,16 +34,18 @@ std::vector<Aabb> read_boxes(const double *boxes, size_t count, size_t stride) {
     return out;
 }
 
-// occupancy_threshold and unknown_policy do not apply to boxes (checked
-// for validity only, so one request serves octrees and boxes alike).
-void check_shared_fields(int32_t unknown_policy, double threshold) {
+// occupancy_threshold, unknown_policy and obstacle_geometry do not apply
+// to boxes (checked for validity only, so one request serves octrees and
+// boxes alike).
+void check_shared_fields(int32_t unknown_policy, double threshold, int32_t obstacle_geometry) {
     read_unknown_policy(unknown_policy, "request->unknown_policy");
+    read_obstacle_geometry(obstacle_geometry, "request->obstacle_geometry");
     if (!(threshold == 0.0 || (threshold > 0.0 && threshold < 1.0)))
         throw_invalid(format("request->occupancy_threshold is %g; 0 or a probability in (0, 1) is needed", threshold));
 }
 
 CollisionSettings box_collision_settings(const opx_collision_request &r) {
-    check_shared_fields(r.unknown_policy, r.occupancy_threshold);
+    check_shared_fields(r.unknown_policy, r.occupancy_threshold, r.obstacle_geometry);
     if (r.compute_cost) throw_invalid("request->compute_cost: caller boxes have no uncertain or unknown space");
     CollisionSettings s;
     s.max_contacts = r.max_contacts;
@@ -52,7 +54,7 @@ CollisionSettings box_collision_settings(const opx_collision_request &r) {
 }
 
 DistanceSettings box_distance_settings(const opx_distance_request &r) {
-    check_shared_fields(r.unknown_policy, r.occupancy_threshold);
+    check_shared_fields(r.unknown_policy, r.occupancy_threshold, r.obstacle_geometry);
     return read_distance_bounds(r);
 }
 

@@ -14,6 +14,7 @@ DistanceSettings read_distance_request(const opx_distance_request &r, const Sens
     DistanceSettings s = read_distance_bounds(r);
     s.unknown_occupied = read_unknown_policy(r.unknown_policy, "request->unknown_policy");
     s.threshold_log_odds = read_threshold_log_odds(r.occupancy_threshold, tree, "request->occupancy_threshold");
+    s.point_extents = read_obstacle_geometry(r.obstacle_geometry, "request->obstacle_geometry");
     return s;
 }
 

@@ -51,6 +51,7 @@ opx_collision_request collision_request_of(const Request &r) {
     c.compute_cost = r.compute_cost;
     c.max_cost_boxes = r.max_cost_boxes;
     c.unknown_probability = r.unknown_probability;
+    c.obstacle_geometry = r.obstacle_geometry;
     for (int axis = 0; axis < 3; ++axis) {
         c.region_min[axis] = r.region_min[axis];
         c.region_max[axis] = r.region_max[axis];

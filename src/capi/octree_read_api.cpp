@@ -27,6 +27,7 @@ opx_octree_stats stats_to_abi(const TreeStats &s, double resolution) {
     out.leaves_free = s.leaves[kFree];
     out.inner_nodes = s.inner_nodes;
     out.memory_bytes = s.memory_bytes;
+    out.leaves_with_extent = s.leaves_with_extent;
     for (int axis = 0; axis < 3; ++axis) {
         out.occupied_min[axis] = s.occupied_min[axis];
         out.occupied_max[axis] = s.occupied_max[axis];

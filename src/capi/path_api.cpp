@@ -14,6 +14,7 @@ PathSettings path_settings(const opx_path_request &merged, const SensorOctree *t
     settings.distance = merged.compute_distance != 0;
     settings.distance_settings.threshold_log_odds = settings.collision.threshold_log_odds;
     settings.distance_settings.unknown_occupied = settings.collision.unknown_occupied;
+    settings.distance_settings.point_extents = settings.collision.point_extents;
     return settings;
 }
 

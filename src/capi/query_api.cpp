@@ -17,6 +17,7 @@ CollisionSettings collision_settings(const opx_collision_request &merged, const 
     settings.max_contacts = merged.max_contacts;
     settings.cost = merged.compute_cost != 0;
     settings.penetration = merged.compute_penetration != 0;
+    settings.point_extents = read_obstacle_geometry(merged.obstacle_geometry, "request->obstacle_geometry");
     if (settings.cost) {
         const double p = merged.unknown_probability;
         if (!(p >= 0.0 && p <= 1.0))

@@ -20,6 +20,13 @@ float read_threshold_log_odds(double threshold, const SensorOctree &tree, const 
     return static_cast<float>(log_odds(threshold == 0.0 ? tree.params().occupied_threshold : threshold));
 }
 
+bool read_obstacle_geometry(int32_t geometry, const char *argument) {
+    if (geometry != OPX_OBSTACLE_CELLS && geometry != OPX_OBSTACLE_POINT_EXTENTS)
+        throw_invalid(format("%s %d is neither OPX_OBSTACLE_CELLS (0) nor OPX_OBSTACLE_POINT_EXTENTS (1)", argument,
+                             geometry));
+    return geometry == OPX_OBSTACLE_POINT_EXTENTS;
+}
+
 namespace {
 
 void require_error_bound(double value, const char *argument) {

@@ -11,7 +11,10 @@
 // per-frame pass over the map.
 //
 // Packing: per axis, the lowest and highest 1/32nd of the cube that holds
-// an obstacle leaf (5 bits each, six fields), and a validity bit.  A box
+// an obstacle leaf (5 bits each, six fields), and a validity bit.  Leaves
+// use the same bytes, packed the same way, for their point extent (the box
+// of the sensed points in them, point_extent.hpp); an inner node's box is
+// made of its leaves' whole cubes, whatever their extents.  A box
 // is only computed inside a BoundsScope (which says the threshold); a node
 // updated outside one is marked invalid, and the engines then use its cube.
 #pragma once
@@ -48,6 +51,10 @@ public:
 
     // Meaningful for nodes with children only; 0 when not valid.
     uint32_t packed_bounds() const { return packed_bounds_; }
+    // A leaf's use of the same 4 bytes: the box of the sensed points that
+    // made it occupied (point_extent.hpp); 0 when it has none.
+    uint32_t point_extent() const { return packed_bounds_; }
+    void set_point_extent(uint32_t packed) { packed_bounds_ = packed; }
     // Whether the node has children, from the node alone.  OctoMap's
     // nodeHasChildren also scans the child array (another cache line, and
     // the traversals ask it of every child they bound); the array alone
@@ -79,6 +86,7 @@ template <> void BoundedTreeBase::allocNodeChildren(octoprox::BoundedNode *node)
 template <> octoprox::BoundedNode *BoundedTreeBase::createNodeChild(octoprox::BoundedNode *node, unsigned int child);
 template <> void BoundedTreeBase::deleteNodeChild(octoprox::BoundedNode *node, unsigned int child);
 template <> bool BoundedTreeBase::pruneNode(octoprox::BoundedNode *node);
+template <> void BoundedTreeBase::expandNode(octoprox::BoundedNode *node);
 template <> void BoundedTreeBase::deleteNodeRecurs(octoprox::BoundedNode *node);
 template <> size_t BoundedTreeBase::memoryUsage() const;
 }  // namespace octomap

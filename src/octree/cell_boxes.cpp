@@ -25,7 +25,11 @@ public:
     CellExtractor(const OctreeView &view, const CellBands &bands, CellBoxes *occupied, CellBoxes *uncertain)
         : view_(view), bands_(bands), occupied_(occupied), uncertain_(uncertain),
           // With no uncertain output, only obstacle leaves matter.
-          lowest_wanted_(uncertain != nullptr ? bands.free_log_odds : bands.threshold_log_odds) {}
+          lowest_wanted_(uncertain != nullptr ? bands.free_log_odds : bands.threshold_log_odds) {
+        model_.point_extents = bands.point_extents;
+        model_.threshold = bands.threshold_log_odds;
+        model_.pad = obstacle_box_pad(view.resolution());
+    }
 
     // Recursion depth is bounded by kTreeDepth.
     void visit(OctreeView::NodeRef node, const CellKey &key) {
@@ -39,8 +43,11 @@ public:
                 if (OctreeView::NodeRef child = view_.child(node, i)) visit(child, key.child(i));
             return;
         }
-        CellBoxes *band = l >= bands_.threshold_log_odds ? occupied_ : uncertain_;
-        if (band != nullptr) band->add(cell_box(key, view_.resolution()), key, l);
+        const bool obstacle = l >= bands_.threshold_log_odds;
+        CellBoxes *band = obstacle ? occupied_ : uncertain_;
+        if (band == nullptr) return;
+        const Aabb cube = cell_box(key, view_.resolution());
+        band->add(obstacle ? obstacle_bounds(view_, node, cube, model_, false) : cube, key, l);
     }
 
 private:
@@ -49,6 +56,7 @@ private:
     CellBoxes *occupied_;
     CellBoxes *uncertain_;
     float lowest_wanted_;
+    ObstacleModel model_;  // leaves only: no inner boxes
 };
 
 }  // namespace

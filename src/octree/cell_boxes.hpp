@@ -33,11 +33,15 @@ struct CellBoxes {
 struct CellBands {
     float threshold_log_odds = 0.0f;
     float free_log_odds = 0.0f;
+    // An obstacle leaf's box is its point extent when it keeps one (the
+    // query engines' obstacle_bounds, octree_cell.hpp), else its cube.
+    bool point_extents = false;
 };
 
 // Fills `occupied` with the leaves at or above the threshold and, unless
 // null, `uncertain` with the leaves in the uncertain band (both cleared
-// first), in depth-first child order.  Subtrees whose maximum log-odds (an
+// first), in depth-first child order; keys are the cells', boxes the
+// obstacle boxes (bands.point_extents).  Subtrees whose maximum log-odds (an
 // inner node's value) is below the lowest band wanted are skipped.  Boxes
 // are exact: the same faces as the query engines' cell boxes.
 void extract_cell_boxes(const OctreeView &view, const CellBands &bands, CellBoxes &occupied,

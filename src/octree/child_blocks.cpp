@@ -15,6 +15,8 @@
 // only subclass, so `this` here is always a BoundedOcTree (pool_of).
 #include "octree/bounded_tree.hpp"
 
+#include "octree/point_extent.hpp"
+
 #include <cstddef>
 #include <limits>
 #include <new>
@@ -96,14 +98,44 @@ void BoundedTreeBase::deleteNodeChild(BoundedNode *node, unsigned int child) {
     size_changed = true;
 }
 
-// OctoMap's pruneNode, with the block freed instead of the array.
+// OctoMap's pruneNode, with the block freed instead of the array.  The
+// new leaf's point extent holds its children's (none when one of them has
+// none: that child is a whole cube).
 template <>
 bool BoundedTreeBase::pruneNode(BoundedNode *node) {
     if (!isNodeCollapsible(node)) return false;
     node->copyData(*getNodeChild(node, 0));
+    uint32_t merged = 0;  // the children's extents in the node's slots
+    for (unsigned int i = 0; i < 8; ++i) {
+        const uint32_t child = getNodeChild(node, i)->point_extent();
+        if (!octoprox::extent::valid(child)) {
+            merged = 0;
+            break;
+        }
+        const uint32_t lifted = octoprox::extent::to_parent(child, static_cast<int>(i));
+        merged = i == 0 ? lifted : octoprox::extent::merge(merged, lifted);
+    }
+    node->set_point_extent(merged);
     for (unsigned int i = 0; i < 8; ++i) deleteNodeChild(node, i);
     release_children(pool_of(this), *node);  // the block, now empty
     return true;
+}
+
+// OctoMap's expandNode (eight children holding the leaf's value), each
+// child keeping the part of the leaf's point extent inside it.  The node's
+// own obstacle box is unknown until its children change (none of ours
+// expands a node without changing one).
+template <>
+void BoundedTreeBase::expandNode(BoundedNode *node) {
+    const uint32_t extent = node->point_extent();
+    for (unsigned int i = 0; i < 8; ++i) {
+        BoundedNode *child = createNodeChild(node, i);
+        child->copyData(*node);
+        child->set_point_extent(octoprox::extent::valid(extent)
+                                    ? octoprox::extent::to_child(extent, static_cast<int>(i))
+                                    : 0);
+    }
+    node->set_point_extent(0);
 }
 
 // OctoMap calls this with the root alone (clear()), the one node that is

@@ -4,9 +4,12 @@
 
 #include "base/error.hpp"
 #include "base/parallel.hpp"
+#include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
+#include "octree/octree_cell.hpp"
 #include "octree/octree_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace octoprox {
@@ -22,7 +25,9 @@ octomap::point3d to_float(const Vec3 &p) {
 // it becomes an int (OctoMap converts first: undefined for far points).
 class KeyMapper {
 public:
-    explicit KeyMapper(const BoundedOcTree &tree) : factor_(1.0 / tree.getResolution()) {}
+    explicit KeyMapper(const BoundedOcTree &tree)
+        : resolution_(tree.getResolution()), factor_(1.0 / tree.getResolution()) {}
+    double resolution() const { return resolution_; }
 
     bool key(const octomap::point3d &p, octomap::OcTreeKey &out) const {
         for (int axis = 0; axis < 3; ++axis) {
@@ -39,6 +44,7 @@ public:
 
 private:
     static constexpr double kHalf = kKeyCenter;  // OctoMap's tree_max_val
+    double resolution_;
     double factor_;
 };
 
@@ -54,6 +60,38 @@ struct RayPart {
     InsertCounts counts;
 };
 
+// Adds a sensed point (map frame, before OctoMap's rounding to float) to
+// the extents of the frame's end cells.  Neighbouring points of a scan
+// mostly share a cell: they merge into the last entry, and only the
+// remaining entries are sorted later.
+void add_extent(const octomap::OcTreeKey &key, const Vec3 &point, double resolution,
+                std::vector<CellExtent> &extents, octomap::OcTreeKey &last_key) {
+    CellKey cell;
+    cell.key[0] = key[0], cell.key[1] = key[1], cell.key[2] = key[2];
+    cell.depth = kTreeDepth;
+    const uint32_t packed = extent::of_point(cell_box(cell, resolution), point);
+    if (!extents.empty() && key == last_key) {
+        extents.back().packed = extent::merge(extents.back().packed, packed);
+        return;
+    }
+    extents.push_back(CellExtent{morton_encode(key[0], key[1], key[2]), packed});
+    last_key = key;
+}
+
+// Sorts the entries by code and merges each cell's into one.
+void merge_extents(std::vector<CellExtent> &extents) {
+    std::sort(extents.begin(), extents.end(),
+              [](const CellExtent &a, const CellExtent &b) { return a.code < b.code; });
+    size_t kept = 0;
+    for (size_t i = 0; i < extents.size(); ++i) {
+        if (kept > 0 && extents[kept - 1].code == extents[i].code)
+            extents[kept - 1].packed = extent::merge(extents[kept - 1].packed, extents[i].packed);
+        else
+            extents[kept++] = extents[i];
+    }
+    extents.resize(kept);
+}
+
 // The rays of points [begin, end).
 void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
                   const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
@@ -63,7 +101,8 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
     rays.ends.reserve(end - begin);
     rays.end_keys.reserve(end - begin);
     rays.hit_keys.reserve(end - begin);
-    octomap::OcTreeKey key;
+    const double resolution = mapper.resolution();
+    octomap::OcTreeKey key, last_extent_key;
     for (size_t i = begin; i < end; ++i) {
         const Vec3 p_sensor = points.read(i);
         if (!is_finite(p_sensor)) {
@@ -71,7 +110,8 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
             continue;
         }
         // OctoMap works in float: round once, then test the rounded point.
-        const octomap::point3d p = to_float(settings.sensor_pose.apply(p_sensor));
+        const Vec3 p_map = settings.sensor_pose.apply(p_sensor);
+        const octomap::point3d p = to_float(p_map);
         if (limited && !((p - origin).norm() <= settings.max_range)) {
             ++counts.out_of_range;
             if (!settings.raycast) continue;
@@ -85,6 +125,7 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
         }
         add_ray(p, key, rays);
         rays.hit_keys.push_back(key);
+        add_extent(key, p_map, resolution, rays.hit_extents, last_extent_key);
         ++counts.used;
     }
 }
@@ -120,8 +161,10 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         append(rays.ends, parts[i].rays.ends);
         append(rays.end_keys, parts[i].rays.end_keys);
         append(rays.hit_keys, parts[i].rays.hit_keys);
+        append(rays.hit_extents, parts[i].rays.hit_extents);
         rays.box.grow(parts[i].rays.box);
     }
+    merge_extents(rays.hit_extents);
     for (const RayPart &part : parts) {
         counts.used += part.counts.used;
         counts.nonfinite += part.counts.nonfinite;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "octree/frame_marks.hpp"
+#include "octree/point_extent.hpp"
 #include "octree/sensor_octree.hpp"
 
 #include <octomap/OcTreeKey.h>
@@ -22,6 +23,9 @@ struct FrameRays {
     std::vector<octomap::point3d> ends;
     std::vector<octomap::OcTreeKey> end_keys;
     std::vector<octomap::OcTreeKey> hit_keys;
+    // The extent of the points in each occupied end cell, ascending by
+    // Morton code, one entry a cell (point_extent.hpp).
+    std::vector<CellExtent> hit_extents;
     KeyBox box;                               // keys of the origin and every end
 };
 

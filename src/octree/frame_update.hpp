@@ -12,12 +12,22 @@
 #pragma once
 
 #include "octree/frame_cells.hpp"
+#include "octree/point_extent.hpp"
+
+#include <vector>
 
 namespace octoprox {
 
 class BoundedOcTree;
 
-// Call inside a BoundsScope, after reserve_update.
-void apply_frame_cells(BoundedOcTree &tree, const FrameCells &cells);
+// Call inside a BoundsScope, after reserve_update.  `extents` holds one
+// entry per hit cell, ascending by code (FrameRays::hit_extents).  A hit
+// leaf's point extent grows by the frame's points when it has one, starts
+// from them when the leaf was not occupied (log-odds below
+// `occupied_log_odds`) before, and stays absent (the whole cube) on a leaf
+// that was occupied without one (read from a file); a missed leaf that
+// ends below the threshold loses its extent.
+void apply_frame_cells(BoundedOcTree &tree, const FrameCells &cells, const std::vector<CellExtent> &extents,
+                       float occupied_log_odds);
 
 }  // namespace octoprox

@@ -132,7 +132,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     ++generation_;
     {
         const BoundsScope scope(occupied_log_odds_);  // keeps the inner obstacle boxes
-        apply_frame_cells(*tree_, cells);
+        apply_frame_cells(*tree_, cells, rays.hit_extents, occupied_log_odds_);
     }
     tree_->child_blocks().release_spares();
     grow_known_bounds(cells.box);

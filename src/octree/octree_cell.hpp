@@ -92,31 +92,50 @@ inline bool obstacle_cells_meet(uint32_t packed, const int32_t cube_lo[3], int w
 // (|x| <= kKeyCenter * resolution), and still far below a micrometre.
 inline double obstacle_box_pad(double resolution) { return 1e-12 * kKeyCenter * resolution; }
 
-// What the obstacles of a cell's subtree can lie in: the box of its
-// obstacle leaves when `use_boxes` (the query's obstacles are leaves at or
-// above a threshold >= the view's bounds_threshold) and the node keeps one,
-// else its cube.  `inner`: the cell's node has children (a caller that
-// knows it already saves OctoMap's scan of the child pointers).
-inline Aabb obstacle_bounds(const OctreeView &view, OctreeView::NodeRef node, const Aabb &cube, bool use_boxes,
-                            double pad, bool inner) {
-    if (use_boxes && inner) {
+// What a query takes as the obstacles of the map's cells.
+struct ObstacleModel {
+    // The map's inner obstacle boxes hold: the query's obstacles are the
+    // leaves at or above a threshold >= the view's bounds_threshold.
+    bool inner_boxes = false;
+    // An obstacle leaf is the box of its sensed points when it keeps one
+    // (OPX_OBSTACLE_POINT_EXTENTS), else its cube.
+    bool point_extents = false;
+    float threshold = 0.0f;  // leaves at or above it are obstacles
+    double pad = 0.0;        // obstacle_box_pad of the map
+};
+
+// What the obstacles of a cell's subtree can lie in.  An inner node: the
+// box of its obstacle leaves when the model's inner_boxes and the node
+// keeps one, else its cube.  A leaf (or unknown space, node nullptr): its
+// point extent when the model asks for extents, the leaf is an obstacle
+// and keeps one, else its cube; so a leaf's bounds are exactly the box
+// its obstacle test uses.  `inner`: the cell's node has children (a caller
+// that knows it already saves OctoMap's scan of the child pointers).
+inline Aabb obstacle_bounds(const OctreeView &view, OctreeView::NodeRef node, const Aabb &cube,
+                            const ObstacleModel &model, bool inner) {
+    if (inner) {
+        if (!model.inner_boxes) return cube;
         const uint32_t packed = view.packed_obstacle_bounds(node);
-        if (packed != 0) return obstacle_box(cube, packed, pad);
+        return packed != 0 ? obstacle_box(cube, packed, model.pad) : cube;
+    }
+    if (model.point_extents && node != nullptr && view.log_odds(node) >= model.threshold) {
+        const uint32_t packed = view.point_extent(node);
+        if (packed != 0) return obstacle_box(cube, packed, model.pad);
     }
     return cube;
 }
 
-inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad,
+inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, const ObstacleModel &model,
                             bool inner) {
-    return obstacle_bounds(view, cell.node, cell.box, use_boxes, pad, inner);
+    return obstacle_bounds(view, cell.node, cell.box, model, inner);
 }
 
 inline bool is_inner(const OctreeView &view, const OctreeCell &cell) {
     return cell.node != nullptr && view.has_children(cell.node);
 }
 
-inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, bool use_boxes, double pad) {
-    return obstacle_bounds(view, cell, use_boxes, pad, is_inner(view, cell));
+inline Aabb obstacle_bounds(const OctreeView &view, const OctreeCell &cell, const ObstacleModel &model) {
+    return obstacle_bounds(view, cell, model, is_inner(view, cell));
 }
 
 // The children (bit i for child i) that a box overlapping the parent can

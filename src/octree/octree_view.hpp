@@ -61,6 +61,9 @@ public:
     // obstacles are leaves at or above a threshold >= bounds_threshold().
     uint32_t packed_obstacle_bounds(NodeRef node) const;
     float bounds_threshold() const { return bounds_threshold_; }
+    // For a leaf: the box of the sensed points in it, packed as in
+    // point_extent.hpp (0 when it has none: the whole cube).
+    uint32_t point_extent(NodeRef node) const;
     // Asks the CPU to fetch the children in `mask` (bit i: child i) ahead,
     // so that a traversal reading them does not wait for each in turn.
     void prefetch_children(NodeRef node, unsigned mask) const;

@@ -49,4 +49,8 @@ inline uint32_t OctreeView::packed_obstacle_bounds(NodeRef node) const {
     return static_cast<const BoundedNode *>(node)->packed_bounds();
 }
 
+inline uint32_t OctreeView::point_extent(NodeRef node) const {
+    return static_cast<const BoundedNode *>(node)->point_extent();
+}
+
 }  // namespace octoprox

@@ -1,6 +1,7 @@
 #include "octree/sensor_octree.hpp"
 
 #include "base/error.hpp"
+#include "octree/point_extent.hpp"
 #include "octree/traverse.hpp"
 
 #include "octree/bounded_tree.hpp"
@@ -158,7 +159,9 @@ TreeStats SensorOctree::stats() const {
                 const int cls = classify_log_odds(tree.log_odds(node));
                 ++s.leaves[cls];
                 grow_bounds(s.known_min, s.known_max, s.has_known, cell, res);
-                if (cls == kOccupied) grow_bounds(s.occupied_min, s.occupied_max, s.has_occupied, cell, res);
+                if (cls != kOccupied) return;
+                grow_bounds(s.occupied_min, s.occupied_max, s.has_occupied, cell, res);
+                if (extent::valid(tree.point_extent(node))) ++s.leaves_with_extent;
             },
             [&](OctreeView::NodeRef, const CellKey &) { ++s.inner_nodes; });
     }

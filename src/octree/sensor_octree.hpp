@@ -67,6 +67,7 @@ struct TreeStats {
     bool has_occupied = false, has_known = false;
     double occupied_min[3] = {0, 0, 0}, occupied_max[3] = {0, 0, 0};
     double known_min[3] = {0, 0, 0}, known_max[3] = {0, 0, 0};
+    uint64_t leaves_with_extent = 0;  // occupied leaves keeping a point extent
 };
 
 class SensorOctree {

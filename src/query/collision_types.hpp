@@ -18,6 +18,7 @@ struct CollisionSettings {
     double unknown_probability = 0.5;
     uint32_t max_cost_boxes = 16;     // the costliest kept
     bool penetration = false;         // depth, normal and point per contact
+    bool point_extents = false;       // obstacle leaves are their point extents (octree_cell.hpp)
     Aabb region;                      // where unknown space counts
 };
 

@@ -16,6 +16,7 @@ struct DistanceSettings {
     double rel_err = 0.0;  // rel_err * answer); 0 and 0: exact
     double cutoff = std::numeric_limits<double>::infinity();  // farther: "at least cutoff"
     bool signed_distance = false;  // penetration depth as a negative distance
+    bool point_extents = false;    // obstacle leaves are their point extents (octree_cell.hpp)
 };
 
 // The closest pair found: a shape of a link and an obstacle cell.

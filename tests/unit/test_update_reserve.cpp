@@ -56,7 +56,7 @@ void apply_reserved(BoundedOcTree &tree, const Frame &frame) {
     const size_t slab_bytes = tree.child_blocks().bytes_reserved();
     const size_t in_use = tree.child_blocks().blocks_in_use();
     tree.child_blocks().reset_peak();
-    octoprox::apply_frame_cells(tree, cells);
+    octoprox::apply_frame_cells(tree, cells, {}, 0.0f);  // no point extents: occupancy alone
     EXPECT_LE(tree.child_blocks().peak_blocks_in_use() - in_use, needed);
     EXPECT_EQ(tree.child_blocks().bytes_reserved(), slab_bytes) << "the update grew the pool after its reserve";
 }

@@ -18,8 +18,8 @@ double ms_since(Clock::time_point t) { return std::chrono::duration<double, std:
 
 }  // namespace
 
-void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
-    const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, threshold_log_odds};
+void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds, bool point_extents) {
+    const BandKey key{tree.identity(), tree.generation(), threshold_log_odds, threshold_log_odds, point_extents};
     if (!caller_boxes_ && obstacles_.key == key) return;
     // Nothing is bound until the new tree stands: a build that throws must
     // not leave a band that a later query on the old frame takes as bound.
@@ -29,6 +29,7 @@ void AmortizedEngine::bind(const SensorOctree &tree, float threshold_log_odds) {
     CellBands bands;
     bands.threshold_log_odds = threshold_log_odds;
     bands.free_log_odds = threshold_log_odds;
+    bands.point_extents = point_extents;
     extract_cell_boxes(tree, bands, obstacles_.cells, nullptr);
     extract_ms_ = ms_since(start);
     build_ms_ = build_tree(obstacles_);

@@ -86,7 +86,7 @@ DistanceOutcome AmortizedEngine::distance_bound(const LinkSet &links, const Dist
 
 CollisionOutcome AmortizedEngine::collide(const SensorOctree &tree, const LinkSet &links,
                                           const CollisionSettings &settings, std::vector<Contact> &contacts) {
-    bind(tree, settings.threshold_log_odds);
+    bind(tree, settings.threshold_log_odds, settings.point_extents);
     if (settings.unknown_occupied || settings.cost) bind_unknown(tree);
     if (settings.cost) bind_uncertain(tree, settings.threshold_log_odds, settings.free_log_odds);
     CollisionOutcome out =
@@ -100,7 +100,7 @@ CollisionOutcome AmortizedEngine::collide(const SensorOctree &tree, const LinkSe
 
 DistanceOutcome AmortizedEngine::distance(const SensorOctree &tree, const LinkSet &links,
                                           const DistanceSettings &settings, std::vector<double> *per_link) {
-    bind(tree, settings.threshold_log_odds);
+    bind(tree, settings.threshold_log_odds, settings.point_extents);
     if (settings.unknown_occupied) bind_unknown(tree);
     return distance_bound(links, settings, settings.unknown_occupied, per_link,
                           [&](const Band &band, int32_t item, DistanceOutcome &best) {

@@ -33,8 +33,9 @@ class AmortizedEngine final : public Engine {
 public:
     explicit AmortizedEngine(const AmortizedOptions &options = AmortizedOptions()) : options_(options) {}
 
-    // Builds the obstacle tree unless it already holds this frame at this threshold.
-    void bind(const SensorOctree &tree, float threshold_log_odds);
+    // Builds the obstacle tree unless it already holds this frame at this
+    // threshold and obstacle model (cubes or point extents).
+    void bind(const SensorOctree &tree, float threshold_log_odds, bool point_extents);
     // Engine's queries (engine.hpp), over the trees bound to the frame.
     CollisionOutcome collide(const SensorOctree &tree, const LinkSet &links, const CollisionSettings &settings,
                              std::vector<Contact> &contacts) override;
@@ -62,9 +63,10 @@ private:
     struct BandKey {
         uint64_t identity = 0, generation = 0;  // identity 0: nothing bound
         float threshold = 0.0f, free = 0.0f;
+        bool point_extents = false;
         bool operator==(const BandKey &o) const {
             return identity == o.identity && generation == o.generation && threshold == o.threshold &&
-                   free == o.free;
+                   free == o.free && point_extents == o.point_extents;
         }
     };
     // One band of a frame's cells (or the caller's boxes) and its tree.

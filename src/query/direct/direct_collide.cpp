@@ -14,9 +14,11 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
     contacts_ = &sink;
     cost_.clear();
     done_ = false;
-    use_obstacle_boxes_ = !settings.unknown_occupied && !settings.cost &&
-                          settings.threshold_log_odds >= view.bounds_threshold();
-    box_pad_ = obstacle_box_pad(view.resolution());
+    model_.inner_boxes = !settings.unknown_occupied && !settings.cost &&
+                         settings.threshold_log_odds >= view.bounds_threshold();
+    model_.point_extents = settings.point_extents;
+    model_.threshold = settings.threshold_log_odds;
+    model_.pad = obstacle_box_pad(view.resolution());
     if (!links.tree().empty()) {
         const Cell root = root_cell(view);
         // An empty map is one unknown cube.
@@ -99,7 +101,7 @@ void DirectCollider::test_leaf_pair(const Cell &cell, int32_t robot_node) {
 // goes on for the cost.
 void DirectCollider::test_obstacle(const Cell &cell, const PlacedShape &shape) {
     const bool unknown = cell.node == nullptr;
-    const bool settled = contacts_->offer(shape, cell.box, [&] {
+    const bool settled = contacts_->offer(shape, bounding_box(cell), [&] {
         return describe_cell(*tree_, cell.key, unknown, unknown ? 0.0f : view_->log_odds(cell.node));
     });
     if (settled) done_ = !settings_.cost;

@@ -31,9 +31,7 @@ private:
     void test_obstacle(const Cell &cell, const PlacedShape &shape);
     void test_cost(const Cell &cell, const PlacedShape &shape);
     // Where a cell's obstacles can lie (octree_cell.hpp obstacle_bounds).
-    Aabb bounding_box(const Cell &cell) const {
-        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_);
-    }
+    Aabb bounding_box(const Cell &cell) const { return obstacle_bounds(*view_, cell, model_); }
 
     const OctreeView *view_ = nullptr;
     const SensorOctree *tree_ = nullptr;
@@ -43,11 +41,10 @@ private:
     CollisionOutcome outcome_;
     CostCollector cost_;
     bool done_ = false;
-    // The map's obstacle boxes hold for this query: obstacles are leaves at
-    // or above its threshold, and cost (which also looks for uncertain and
-    // unknown cells) is off.
-    bool use_obstacle_boxes_ = false;
-    double box_pad_ = 0.0;
+    // The map's inner obstacle boxes hold for this query when obstacles are
+    // leaves at or above its threshold and cost (which also looks for
+    // uncertain and unknown cells) is off.
+    ObstacleModel model_;
 };
 
 }  // namespace octoprox

@@ -32,8 +32,10 @@ void DirectDistance::start(const SensorOctree &tree, const LinkSet &links, const
     set_bound(settings.cutoff);
     // The boxes hold the leaves at or above the map's threshold: a query
     // with a higher threshold has fewer obstacles, a lower one more.
-    use_obstacle_boxes_ = !settings.unknown_occupied && settings.threshold_log_odds >= view_->bounds_threshold();
-    box_pad_ = obstacle_box_pad(view_->resolution());
+    model_.inner_boxes = !settings.unknown_occupied && settings.threshold_log_odds >= view_->bounds_threshold();
+    model_.point_extents = settings.point_extents;
+    model_.threshold = settings.threshold_log_odds;
+    model_.pad = obstacle_box_pad(view_->resolution());
     (void)tree;
 }
 
@@ -151,7 +153,7 @@ void DirectDistance::search_shape_from_entries(CubeEntryFinder &finder, int32_t 
     Aabb reach = robot.box;
     reach.inflate(bound_);
     CubeEntries &entries = entries_;
-    finder.find(reach, settings_.threshold_log_odds, use_obstacle_boxes_, entries);
+    finder.find(reach, settings_.threshold_log_odds, model_.inner_boxes, entries);
     double lower[8];
     Aabb *bounds = entry_bounds_;
     bool inner[8];
@@ -188,7 +190,7 @@ void DirectDistance::recurse(const Cell &cell, const Aabb &bounds, bool inner, i
     if (can_prune(lower)) return;
     const AabbTreeNode &robot = robot_[robot_node];
     const bool octree_leaf = !inner;
-    if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, robot);
+    if (octree_leaf && robot.is_leaf()) return test_leaf_pair(cell, bounds, robot);
     // As in collision: favour the robot until the cube is twice its node.
     if (robot.is_leaf() || (!octree_leaf && cell.box.hi.x() - cell.box.lo.x() > 2.0 * robot.box.longest_edge()))
         return descend_octree(cell, robot_node);
@@ -225,8 +227,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
                             : (!settings_.unknown_occupied && view_->log_odds(node) < settings_.threshold_log_odds))
             continue;
         const bool inner = node != nullptr && view_->has_children(node);
-        const Aabb bounds =
-            obstacle_bounds(*view_, node, child_box(cell.box, i, mid), use_obstacle_boxes_, box_pad_, inner);
+        const Aabb bounds = obstacle_bounds(*view_, node, child_box(cell.box, i, mid), model_, inner);
         const double lower = lower_bound(robot, bounds);
         if (can_prune(lower)) continue;
         if (inner) view_->prefetch_children(node, 0xFFu);  // most survivors are descended
@@ -244,7 +245,7 @@ void DirectDistance::descend_octree(const Cell &cell, int32_t robot_node) {
     }
 }
 
-void DirectDistance::test_leaf_pair(const Cell &cell, const AabbTreeNode &robot) {
+void DirectDistance::test_leaf_pair(const Cell &cell, const Aabb &box, const AabbTreeNode &robot) {
     if (!is_obstacle(cell)) return;
     const PlacedShape &shape = placed_[robot.item];
     if (shape.box.empty()) return;  // a disabled link
@@ -252,7 +253,7 @@ void DirectDistance::test_leaf_pair(const Cell &cell, const AabbTreeNode &robot)
     // The bound is the best pair's distance once one is found: a pair below
     // it is the new best.
     ShapeCellDistance d;
-    if (!nearer_pair(shape, cell.box, bound_, settings_.signed_distance, d, best_.narrow_tests)) return;
+    if (!nearer_pair(shape, box, bound_, settings_.signed_distance, d, best_.narrow_tests)) return;
     if (!keep_if_nearer(shape, d, best_)) return;
     const bool unknown = cell.node == nullptr;
     set_cell(best_, cell.key, unknown, unknown ? 0.0f : view_->log_odds(cell.node));

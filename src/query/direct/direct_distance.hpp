@@ -52,7 +52,8 @@ private:
     // with them, computed both once.
     void recurse(const Cell &cell, const Aabb &bounds, bool inner, int32_t robot_node, double lower);
     void descend_octree(const Cell &cell, int32_t robot_node);
-    void test_leaf_pair(const Cell &cell, const AabbTreeNode &robot);
+    // `box`: the cell's obstacle box (its bounds, a leaf's).
+    void test_leaf_pair(const Cell &cell, const Aabb &box, const AabbTreeNode &robot);
     // Prune when the pair cannot bring the answer below the bound, or not
     // by more than the allowed error (slack_).  Inline, and from fields
     // set_bound keeps: the search asks it of every pair it bounds.
@@ -64,9 +65,7 @@ private:
     bool is_obstacle(const Cell &cell) const;
     double lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
     double box_lower_bound(const AabbTreeNode &robot, const Aabb &cell) const;
-    Aabb bounding_box(const Cell &cell, bool inner) const {
-        return obstacle_bounds(*view_, cell, use_obstacle_boxes_, box_pad_, inner);
-    }
+    Aabb bounding_box(const Cell &cell, bool inner) const { return obstacle_bounds(*view_, cell, model_, inner); }
 
     const OctreeView *view_ = nullptr;
     const LinkSet *links_ = nullptr;
@@ -78,12 +77,11 @@ private:
     double slack_ = 0.0;             // abs_err / rel_err allowance, once a pair is found
     bool in_contact_ = false;        // signed, and the bound is at or below 0
     int32_t only_link_ = -1;         // per-link mode: the link searched
-    bool use_obstacle_boxes_ = false;  // the map's inner obstacle boxes hold for this query
+    ObstacleModel model_;            // inner boxes when they hold for this query; point extents
     // Scratch of search_shape_from_entries (never re-entered): as locals,
     // their cells and boxes were filled with empty boxes for every shape.
     CubeEntries entries_;
     Aabb entry_bounds_[8];
-    double box_pad_ = 0.0;
 };
 
 }  // namespace octoprox
