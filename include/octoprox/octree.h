@@ -280,16 +280,21 @@ OPX_API opx_status opx_octree_get_leaves(const opx_octree *tree, uint32_t class_
 /* ---- Files and messages ----------------------------------------------- */
 
 /** Loading: OPX_FORMAT_AUTO reads the header.  Saving: AUTO picks by the
- * path's extension (.bt or .ot); for memory it means BT. */
+ * path's extension (.bt, .ot or .opx); for memory it means BT. */
 #define OPX_FORMAT_AUTO 0
 /** OctoMap binary (.bt): per leaf only occupied/free; a loaded leaf gets
  * the clamping bound of its class as probability. */
 #define OPX_FORMAT_BT 1
 /** OctoMap full (.ot, type "OcTree"): the log-odds of every node. */
 #define OPX_FORMAT_OT 2
+/** OctoProx map (.opx): the .ot content and every occupied leaf's point
+ * extent (OPX_OBSTACLE_POINT_EXTENTS), which .bt and .ot cannot hold.  The
+ * layout is in docs/geometry.md. */
+#define OPX_FORMAT_OPX 3
 
 /**
- * Loads a .bt or .ot file (OctoMap 1.x, type OcTree).  The resolution comes
+ * Loads a .bt or .ot file (OctoMap 1.x, type OcTree) or an OctoProx .opx
+ * map (the same with point extents).  The resolution comes
  * from the file; the other fields of options (may be NULL: defaults) set the
  * probabilities and thresholds.  Corrupt or truncated data gives
  * OPX_ERROR_CORRUPT and no handle (*out = NULL).

@@ -3,6 +3,7 @@
 #include "base/file_bytes.hpp"
 #include "capi/handles.hpp"
 #include "octree/octomap_io.hpp"
+#include "octree/octoprox_map_io.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -18,16 +19,27 @@ bool ends_with(const std::string &text, const char *suffix) {
     return text.size() >= n && text.compare(text.size() - n, n, suffix) == 0;
 }
 
-MapFormat save_format(int32_t format, const char *path) {
-    if (format == OPX_FORMAT_BT) return MapFormat::kBinary;
-    if (format == OPX_FORMAT_OT) return MapFormat::kFull;
+// OPX_FORMAT_* to write, from the format or the path's extension.
+int32_t save_format(int32_t format, const char *path) {
+    if (format == OPX_FORMAT_BT || format == OPX_FORMAT_OT || format == OPX_FORMAT_OPX) return format;
     if (format != OPX_FORMAT_AUTO)
-        throw_invalid(octoprox::format("format %d is not OPX_FORMAT_AUTO, _BT or _OT", format));
-    if (path == nullptr) return MapFormat::kBinary;
+        throw_invalid(octoprox::format("format %d is not OPX_FORMAT_AUTO, _BT, _OT or _OPX", format));
+    if (path == nullptr) return OPX_FORMAT_BT;
     const std::string name(path);
-    if (ends_with(name, ".bt")) return MapFormat::kBinary;
-    if (ends_with(name, ".ot")) return MapFormat::kFull;
-    throw_invalid(octoprox::format("path \"%s\" ends neither in .bt nor in .ot; give the format", path));
+    if (ends_with(name, ".bt")) return OPX_FORMAT_BT;
+    if (ends_with(name, ".ot")) return OPX_FORMAT_OT;
+    if (ends_with(name, ".opx")) return OPX_FORMAT_OPX;
+    throw_invalid(octoprox::format("path \"%s\" ends neither in .bt, .ot nor .opx; give the format", path));
+}
+
+std::string map_bytes(const SensorOctree &tree, int32_t format) {
+    if (format == OPX_FORMAT_OPX) return write_octoprox_map_bytes(tree);
+    return write_map_file_bytes(tree, format == OPX_FORMAT_BT ? MapFormat::kBinary : MapFormat::kFull);
+}
+
+// An OctoProx map or an OctoMap file, told apart by their first line.
+std::unique_ptr<SensorOctree> read_any_map(const std::string &bytes, const OctreeParams &params) {
+    return is_octoprox_map(bytes) ? read_octoprox_map_bytes(bytes, params) : read_map_file_bytes(bytes, params);
 }
 
 // Writes bytes to path; false (with errno set) when any of it is not written.
@@ -75,7 +87,7 @@ OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_optio
         require_pointer(out, "out");
         require_pointer(path, "path");
         const OctreeParams params = read_octree_options(options, "options");
-        return hand_out(read_map_file_bytes(read_file_bytes(path, "map file"), params), out);
+        return hand_out(read_any_map(read_file_bytes(path, "map file"), params), out);
     });
 }
 
@@ -87,7 +99,7 @@ OPX_API opx_status opx_octree_load_memory(const void *data, size_t size,
         if (size > 0) require_pointer(data, "data");
         const OctreeParams params = read_octree_options(options, "options");
         const std::string bytes(static_cast<const char *>(data), size);
-        return hand_out(read_map_file_bytes(bytes, params), out);
+        return hand_out(read_any_map(bytes, params), out);
     });
 }
 
@@ -112,7 +124,7 @@ OPX_API opx_status opx_octree_save_file(const opx_octree *tree, const char *path
     return guard(__func__, [&] {
         require_pointer(tree, "tree");
         require_pointer(path, "path");
-        write_file_atomically(path, write_map_file_bytes(*tree->tree, save_format(format, path)));
+        write_file_atomically(path, map_bytes(*tree->tree, save_format(format, path)));
         return OPX_OK;
     });
 }
@@ -123,7 +135,7 @@ OPX_API opx_status opx_octree_save_memory(const opx_octree *tree, int32_t format
         require_pointer(tree, "tree");
         require_pointer(out_size, "out_size");
         if (capacity > 0) require_pointer(buffer, "buffer");
-        const std::string bytes = write_map_file_bytes(*tree->tree, save_format(format, nullptr));
+        const std::string bytes = map_bytes(*tree->tree, save_format(format, nullptr));
         *out_size = bytes.size();
         if (bytes.size() > capacity)
             throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,

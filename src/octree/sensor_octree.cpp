@@ -169,4 +169,33 @@ TreeStats SensorOctree::stats() const {
     return s;
 }
 
+std::vector<uint32_t> SensorOctree::leaf_extents() const {
+    std::vector<uint32_t> out;
+    const OctreeView tree = view();
+    for_each_leaf(tree, [&](OctreeView::NodeRef node, const CellKey &) { out.push_back(tree.point_extent(node)); });
+    return out;
+}
+
+namespace {
+
+// Depth first, children by index: the order of for_each_leaf.
+void assign_extents(BoundedOcTree &tree, BoundedNode *node, const std::vector<uint32_t> &extents, size_t &next) {
+    if (!tree.nodeHasChildren(node)) {
+        node->set_point_extent(extents[next++]);
+        return;
+    }
+    for (unsigned i = 0; i < 8; ++i)
+        if (tree.nodeChildExists(node, i)) assign_extents(tree, tree.getNodeChild(node, i), extents, next);
+}
+
+}  // namespace
+
+bool SensorOctree::set_leaf_extents(const std::vector<uint32_t> &extents) {
+    if (extents.size() != leaf_extents().size()) return false;
+    size_t next = 0;
+    if (tree_->getRoot() != nullptr) assign_extents(*tree_, tree_->getRoot(), extents, next);
+    ++generation_;  // query contexts holding boxes of this map rebuild them
+    return true;
+}
+
 }  // namespace octoprox

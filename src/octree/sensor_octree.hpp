@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 namespace octoprox {
 
@@ -96,6 +97,11 @@ public:
     // Bounds of every observed cell, kept up to date by each change, so
     // queries can bound unknown space without a pass over the map.
     const Aabb &known_bounds() const { return known_bounds_; }
+    // Every leaf's point extent (0: none), depth first, children by index;
+    // set_leaf_extents gives them back (false, nothing set, when the count
+    // is not the map's leaf count).  For OctoProx map files.
+    std::vector<uint32_t> leaf_extents() const;
+    bool set_leaf_extents(const std::vector<uint32_t> &extents);
     // A process-unique identity and a count of changes: a query context
     // that built structures from this map rebuilds them when either moved.
     uint64_t identity() const { return identity_; }

@@ -177,12 +177,44 @@ static void bad_files_exit_3(void **state) {
     expect_exit(3, "cannot open", "check '%s' --urdf '%s' --path '%s'", map, urdf, scratch_path("none.csv"));
 }
 
+/* The wall's points lie at x = 2.05, in the middle of cells [2.0, 2.1]: the
+ * tool sphere (r 0.1) at slide 1.92 reaches x = 2.02, into the cells but
+ * short of the points.  A .opx map keeps the points' boxes; .bt does not. */
+static void point_extents_from_an_opx_map(void **state) {
+    static cli_result r;
+    static char opx[512];
+    (void)state;
+    (void)scene_map(); /* writes wall.pcd */
+    snprintf(opx, sizeof opx, "%s", scratch_path("wall.opx"));
+    run_cli(&r, "ingest '%s' --res 0.1 -o '%s'", scratch_path("wall.pcd"), opx);
+    assert_int_equal(r.code, 0);
+    run_cli(&r, "info '%s' --json", opx);
+    assert_int_equal(r.code, 0);
+    assert_true(json_field(r.out, "occupied_with_point_extent") > 0);
+    assert_true(json_field(r.out, "occupied_with_point_extent") == json_field_in(r.out, "leaves", "occupied"));
+    run_cli(&r, "info '%s' --json", scene_map());
+    assert_true(json_field(r.out, "occupied_with_point_extent") == 0);
+    run_cli(&r, "check '%s' --urdf '%s' --joints slide=1.92 --json", opx, scene_urdf());
+    assert_int_equal(r.code, 1);
+    run_cli(&r, "check '%s' --urdf '%s' --joints slide=1.92 --obstacles point-extents --distance --json", opx,
+            scene_urdf());
+    assert_int_equal(r.code, 0);
+    assert_non_null(strstr(r.out, "\"obstacles\": \"point-extents\""));
+    assert_true(json_field_in(r.out, "distance", "distance") > 0.02);
+    /* The .bt map keeps whole cells whatever the option. */
+    run_cli(&r, "check '%s' --urdf '%s' --joints slide=1.92 --obstacles point-extents", scene_map(), scene_urdf());
+    assert_int_equal(r.code, 1);
+    run_cli(&r, "check '%s' --urdf '%s' --obstacles points", opx, scene_urdf());
+    assert_int_equal(r.code, 2);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(one_configuration_matches_the_library),
         cmocka_unit_test(a_csv_path_matches_the_library),
         cmocka_unit_test(bad_command_lines_exit_2),
         cmocka_unit_test(bad_files_exit_3),
+        cmocka_unit_test(point_extents_from_an_opx_map),
     };
     return cmocka_run_group_tests_name("cli_check", tests, NULL, NULL);
 }

@@ -5,7 +5,9 @@
 // were occupied without points (a map read from a file).  A random run
 // follows the rules on OctoMap's own map of the same frames.
 #include "octree/bounded_tree.hpp"
+#include "base/error.hpp"
 #include "octree/octomap_io.hpp"
+#include "octree/octoprox_map_io.hpp"
 #include "octree/octree_cell.hpp"
 #include "octree/point_extent.hpp"
 #include "octree/traverse.hpp"
@@ -245,6 +247,34 @@ TEST(PointExtents, RandomFramesFollowTheRules) {
         });
     }
     EXPECT_GT(tree.stats().leaves_with_extent, 0u);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PointExtents, OctoProxMapFilesKeepThem) {
+    octoprox::OctreeParams params;
+    params.resolution = 0.05;
+    SensorOctree tree(params);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 500; ++i) points.emplace_back(unit(rng), unit(rng), 0.2 * unit(rng));
+    insert(tree, points, Vec3(0.5, 0.5, 2.0));
+    const std::string bytes = octoprox::write_octoprox_map_bytes(tree);
+    ASSERT_TRUE(octoprox::is_octoprox_map(bytes));
+    std::unique_ptr<SensorOctree> loaded = octoprox::read_octoprox_map_bytes(bytes, params);
+    EXPECT_EQ(loaded->leaf_extents(), tree.leaf_extents());
+    EXPECT_GT(loaded->stats().leaves_with_extent, 0u);
+    EXPECT_EQ(loaded->stats().leaves_with_extent, tree.stats().leaves_with_extent);
+    // Cut anywhere, or with an extent's bits spoiled: corrupt, never a map.
+    for (size_t cut : {size_t(0), size_t(10), bytes.size() / 2, bytes.size() - 1})
+        EXPECT_THROW(octoprox::read_octoprox_map_bytes(bytes.substr(0, cut), params), octoprox::ApiError) << cut;
+    std::string spoiled = bytes;
+    spoiled[spoiled.size() - 1] = char(0x40);  // bit 30 of the last extent
+    EXPECT_THROW(octoprox::read_octoprox_map_bytes(spoiled, params), octoprox::ApiError);
+    EXPECT_THROW(octoprox::read_octoprox_map_bytes(bytes + "xxxx", params), octoprox::ApiError);
 }
 
 }  // namespace

@@ -48,6 +48,7 @@ static int check_waypoints(const check_context *c, const opx_linkset *links, con
     uint8_t *collided = malloc(csv->waypoint_count);
     if (collided == NULL) return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's answers");
     request.unknown_policy = c->unknown_policy;
+    request.obstacle_geometry = c->obstacle_geometry;
     request.max_threads = c->threads;
     request.self_collision = c->want_self;
     status = opx_query_check_configurations(c->query, c->map, links, rows->values, csv->waypoint_count,
@@ -75,6 +76,7 @@ static int check_motions(const check_context *c, const opx_linkset *links, const
         return cli_fail("check", CLI_EXIT_INTERNAL, "out of memory for the path's motions");
     }
     request.unknown_policy = c->unknown_policy;
+    request.obstacle_geometry = c->obstacle_geometry;
     request.resolution = c->resolution;
     request.max_threads = c->threads;
     request.self_collision = c->want_self;
@@ -113,6 +115,7 @@ static int path_query(const check_context *c, opx_linkset *links, const path_csv
     opx_status status;
     int code = path_poses(c, links, csv, rows, &poses);
     request.unknown_policy = c->unknown_policy;
+    request.obstacle_geometry = c->obstacle_geometry;
     request.compute_distance = c->want_distance;
     request.compute_cost = c->want_cost;
     request.max_cost_boxes = CHECK_MAX_LISTED;

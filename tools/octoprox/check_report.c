@@ -66,6 +66,7 @@ static void print_robot_options_json(const robot_args *r, uint32_t disabled_pair
 void check_print_head(const check_context *c) {
     uint32_t links = 0, disabled_pairs = 0;
     const char *policy = c->unknown_policy == OPX_UNKNOWN_OCCUPIED ? "occupied" : "free";
+    const char *obstacles = c->obstacle_geometry == OPX_OBSTACLE_POINT_EXTENTS ? "point-extents" : "cells";
     opx_linkset_get_link_count(c->links, &links);
     opx_linkset_get_disabled_pair_count(c->links, &disabled_pairs);
     if (!c->json) {
@@ -73,7 +74,7 @@ void check_print_head(const check_context *c) {
         print_scene(c);
         printf("robot      %s (%u links)\n", c->urdf_path, links);
         print_robot_options_text(c->robot, disabled_pairs);
-        printf("unknown    %s\n", policy);
+        printf("unknown    %s\nobstacles  %s\n", policy, obstacles);
         return;
     }
     fputs("{\n  \"map\": ", stdout);
@@ -84,7 +85,7 @@ void check_print_head(const check_context *c) {
     json_string(stdout, c->urdf_path);
     printf(",\n  \"links\": %u", links);
     print_robot_options_json(c->robot, disabled_pairs);
-    printf(",\n  \"unknown\": \"%s\"", policy);
+    printf(",\n  \"unknown\": \"%s\",\n  \"obstacles\": \"%s\"", policy, obstacles);
 }
 
 /* Marks which links have contacts; returns how many do. */

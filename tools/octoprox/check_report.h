@@ -16,6 +16,7 @@ typedef struct check_context {
     const opx_linkset *links;
     opx_query *query;
     int32_t unknown_policy;
+    int32_t obstacle_geometry; /* OPX_OBSTACLE_CELLS or OPX_OBSTACLE_POINT_EXTENTS */
     int want_distance, want_cost, want_self, json;
     double resolution; /* --path: joint step between checked configurations (rad or m) */
     uint32_t threads;  /* --path: threads of the batch calls (0: every core) */

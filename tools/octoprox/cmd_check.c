@@ -10,10 +10,11 @@
 #include <string.h>
 
 static const char kHelp[] =
-    "usage: octoprox check [MAP.bt|MAP.ot] [--scene FILE] --urdf ROBOT.urdf [--package-dir DIR]...\n"
+    "usage: octoprox check [MAP.bt|MAP.ot|MAP.opx] [--scene FILE] --urdf ROBOT.urdf [--package-dir DIR]...\n"
     "                      [--srdf ROBOT.srdf] [--joints name=value,...]\n"
     "                      [--base-pose POSE] [--padding M] [--disable-link NAME]...\n"
     "                      [--self] [--distance] [--cost] [--unknown free|occupied]\n"
+    "                      [--obstacles cells|point-extents]\n"
     "                      [--path FILE.csv [--resolution R] [--threads N]] [--json]\n"
     "\n"
     "Checks one robot configuration (or a path of them) against the map:\n"
@@ -38,6 +39,11 @@ static const char kHelp[] =
     "  --cost                also the cost of uncertain/unknown space\n"
     "  --unknown free|occupied\n"
     "                        what never-observed space is (default free)\n"
+    "  --obstacles cells|point-extents\n"
+    "                        what an occupied cell is: its whole cube (default),\n"
+    "                        or the box of the sensed points in it, where the map\n"
+    "                        keeps one (maps made from clouds, saved as .opx;\n"
+    "                        .bt and .ot keep none)\n"
     "  --path FILE.csv       check a path: the first line names joints, each\n"
     "                        further line is one waypoint's values; joints not\n"
     "                        in the file keep their --joints values; every\n"
@@ -48,7 +54,7 @@ static const char kHelp[] =
     "  --threads N           --path: threads checking it (default 1; 0: every core)\n"
     "  --json                one JSON object: map, scene, scene_objects, urdf,\n"
     "                        links, padding, disabled_links [names], srdf,\n"
-    "                        srdf_disabled_pairs, unknown; then\n"
+    "                        srdf_disabled_pairs, unknown, obstacles; then\n"
     "                        contact_count, colliding_links [names], contacts\n"
     "                        [{link, object: null, cell_class, cell_center,\n"
     "                        cell_size} or {link, object, object_shape}] (one\n"
@@ -96,6 +102,11 @@ static int parse_option(cli_args *args, void *context) {
     } else if ((got = cli_value(args, "--scene")) != 0) {
         if (got < 0) return cli_usage("check", "--scene needs a scene file (.yaml, .yml or .scene)");
         a->context.scene_path = args->value;
+    } else if ((got = cli_value(args, "--obstacles")) != 0) {
+        if (got > 0 && strcmp(args->value, "cells") == 0) a->context.obstacle_geometry = OPX_OBSTACLE_CELLS;
+        else if (got > 0 && strcmp(args->value, "point-extents") == 0)
+            a->context.obstacle_geometry = OPX_OBSTACLE_POINT_EXTENTS;
+        else return cli_usage("check", "--obstacles needs 'cells' or 'point-extents'");
     } else if ((got = cli_value(args, "--path")) != 0) {
         if (got < 0) return cli_usage("check", "--path needs a CSV file");
         a->context.path_file = args->value;
@@ -145,6 +156,7 @@ static int check_map(check_context *c, int *collided) {
     opx_distance_result distance = OPX_DISTANCE_RESULT_INIT;
     opx_status status;
     request.unknown_policy = c->unknown_policy;
+    request.obstacle_geometry = c->obstacle_geometry;
     request.max_contacts = UINT32_MAX; /* every contact: the report names each colliding link */
     request.compute_cost = c->want_cost;
     request.max_cost_boxes = CHECK_MAX_LISTED;
@@ -155,6 +167,7 @@ static int check_map(check_context *c, int *collided) {
     if (c->want_cost) check_print_cost(c, result.total_cost, result.cost_boxes_found, result.cost_box_count);
     if (!c->want_distance) return -1;
     distance_request.unknown_policy = c->unknown_policy;
+    distance_request.obstacle_geometry = c->obstacle_geometry;
     status = opx_query_distance(c->query, c->map, c->links, &distance_request, &distance);
     if (status != OPX_OK) return cli_library_fail("check", status, "the distance query");
     check_print_distance(c, &distance);

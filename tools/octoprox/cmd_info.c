@@ -5,7 +5,7 @@
 #include <string.h>
 
 static const char kHelp[] =
-    "usage: octoprox info MAP.bt|MAP.ot [--json]\n"
+    "usage: octoprox info MAP.bt|MAP.ot|MAP.opx [--json]\n"
     "\n"
     "Prints the map's resolution, its leaves by class (occupied, uncertain,\n"
     "free; unknown space has no cells), the bounds of the occupied and of all\n"
@@ -41,6 +41,7 @@ static void print_json(const char *path, const opx_octree_stats *s) {
     printf(",\n  \"leaves\": {\"occupied\": %llu, \"uncertain\": %llu, \"free\": %llu},\n",
            (unsigned long long)s->leaves_occupied, (unsigned long long)s->leaves_uncertain,
            (unsigned long long)s->leaves_free);
+    printf("  \"occupied_with_point_extent\": %llu,\n", (unsigned long long)s->leaves_with_extent);
     printf("  \"inner_nodes\": %llu,\n  \"memory_bytes\": %llu,\n", (unsigned long long)s->inner_nodes,
            (unsigned long long)s->memory_bytes);
     print_bounds_json("occupied_bounds", s->has_occupied, s->occupied_min, s->occupied_max);
@@ -61,6 +62,8 @@ static void print_human(const char *path, const opx_octree_stats *s) {
     printf("leaves occupied   %llu\n", (unsigned long long)s->leaves_occupied);
     printf("leaves uncertain  %llu\n", (unsigned long long)s->leaves_uncertain);
     printf("leaves free       %llu\n", (unsigned long long)s->leaves_free);
+    printf("point extents     %llu of the occupied leaves (the others are whole cells)\n",
+           (unsigned long long)s->leaves_with_extent);
     printf("inner nodes       %llu\n", (unsigned long long)s->inner_nodes);
     if (s->has_occupied) print_bounds("occupied bounds", s->occupied_min, s->occupied_max);
     if (leaves > 0) print_bounds("observed bounds", s->known_min, s->known_max);

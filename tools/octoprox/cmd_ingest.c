@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 static const char kHelp[] =
-    "usage: octoprox ingest INPUT... -o MAP.bt|MAP.ot\n"
+    "usage: octoprox ingest INPUT... -o MAP.bt|MAP.ot|MAP.opx\n"
     "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--optical-frame]\n"
     "                       [--res 0.05] [--endpoints] [--max-range M] [--json]\n"
     "                       [--intrinsics fx,fy,cx,cy --depth-scale S]\n"
@@ -26,7 +26,9 @@ static const char kHelp[] =
     "                      x right, y down) is the SENSOR frame; 0 is no return.\n"
     "\n"
     "options:\n"
-    "  -o, --output MAP    the map to write (.bt: occupancy only, .ot: log-odds)\n"
+    "  -o, --output MAP    the map to write (.bt: occupancy only, .ot: log-odds,\n"
+    "                      .opx: log-odds and the occupied cells' point extents,\n"
+    "                      for check --obstacles point-extents)\n"
     "  --sensor-pose POSE  the sensor frame in the map frame, for every input\n"
     "                      (metres; quaternion x,y,z,w); default: a PCD's\n"
     "                      VIEWPOINT (tx ty tz qw qx qy qz), else identity\n"
@@ -127,8 +129,8 @@ static int parse_arguments(int argc, char **argv, ingest_args *out) {
     if (out->input_count == 0) return cli_usage("ingest", "no cloud given (nor a depth image)");
     if ((code = ingest_check_camera(&out->camera, out->inputs, out->input_count)) >= 0) return code;
     if (out->output == NULL) return cli_usage("ingest", "no output map given (-o MAP.bt)");
-    if (!ends_with(out->output, ".bt") && !ends_with(out->output, ".ot"))
-        return cli_usage("ingest", "the output map '%s' must end in .bt or .ot", out->output);
+    if (!ends_with(out->output, ".bt") && !ends_with(out->output, ".ot") && !ends_with(out->output, ".opx"))
+        return cli_usage("ingest", "the output map '%s' must end in .bt, .ot or .opx", out->output);
     return -1;
 }
 
