@@ -6,7 +6,6 @@
 #include "base/parallel.hpp"
 #include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
-#include "octree/octree_cell.hpp"
 #include "octree/octree_view.hpp"
 
 #include <algorithm>
@@ -60,23 +59,43 @@ struct RayPart {
     InsertCounts counts;
 };
 
-// Adds a sensed point (map frame, before OctoMap's rounding to float) to
-// the extents of the frame's end cells.  Neighbouring points of a scan
-// mostly share a cell: they merge into the last entry, and only the
-// remaining entries are sorted later.
-void add_extent(const octomap::OcTreeKey &key, const Vec3 &point, double resolution,
-                std::vector<CellExtent> &extents, octomap::OcTreeKey &last_key) {
-    CellKey cell;
-    cell.key[0] = key[0], cell.key[1] = key[1], cell.key[2] = key[2];
-    cell.depth = kTreeDepth;
-    const uint32_t packed = extent::of_point(cell_box(cell, resolution), point);
-    if (!extents.empty() && key == last_key) {
-        extents.back().packed = extent::merge(extents.back().packed, packed);
-        return;
+// The extent of the points of one run of consecutive points in one cell
+// (neighbouring points of a scan mostly share a cell): a run keeps the
+// bounds of its coordinates and becomes one entry, in slots, when it ends;
+// only the entries are sorted later.
+class ExtentRuns {
+public:
+    ExtentRuns(double resolution, std::vector<CellExtent> &out) : slots_(resolution), out_(out) {}
+
+    // A sensed point (map frame, before OctoMap's rounding to float) in the cell `key`.
+    void add(const octomap::OcTreeKey &key, const Vec3 &point) {
+        if (open_ && key == key_) {
+            lo_ = lo_.cwiseMin(point), hi_ = hi_.cwiseMax(point);
+            return;
+        }
+        flush();
+        open_ = true, key_ = key, lo_ = point, hi_ = point;
     }
-    extents.push_back(CellExtent{morton_encode(key[0], key[1], key[2]), packed});
-    last_key = key;
-}
+
+    // Ends the last run.
+    void flush() {
+        if (!open_) return;
+        int lo[3], hi[3], unused;
+        for (int axis = 0; axis < 3; ++axis) {
+            slots_.of(key_[axis], lo_[axis], lo[axis], unused);
+            slots_.of(key_[axis], hi_[axis], unused, hi[axis]);
+        }
+        out_.push_back(CellExtent{morton_encode(key_[0], key_[1], key_[2]), extent::pack(lo, hi)});
+        open_ = false;
+    }
+
+private:
+    extent::PointSlots slots_;
+    std::vector<CellExtent> &out_;
+    bool open_ = false;
+    octomap::OcTreeKey key_;
+    Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero();
+};
 
 // Sorts the entries by code and merges each cell's into one.
 void merge_extents(std::vector<CellExtent> &extents) {
@@ -101,8 +120,8 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
     rays.ends.reserve(end - begin);
     rays.end_keys.reserve(end - begin);
     rays.hit_keys.reserve(end - begin);
-    const double resolution = mapper.resolution();
-    octomap::OcTreeKey key, last_extent_key;
+    ExtentRuns extents(mapper.resolution(), rays.hit_extents);
+    octomap::OcTreeKey key;
     for (size_t i = begin; i < end; ++i) {
         const Vec3 p_sensor = points.read(i);
         if (!is_finite(p_sensor)) {
@@ -125,9 +144,10 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
         }
         add_ray(p, key, rays);
         rays.hit_keys.push_back(key);
-        add_extent(key, p_map, resolution, rays.hit_extents, last_extent_key);
+        extents.add(key, p_map);
         ++counts.used;
     }
+    extents.flush();
 }
 
 template <class T>

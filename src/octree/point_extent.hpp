@@ -8,13 +8,15 @@
 // (obstacle_box in octree_cell.hpp), then moved outward while the decoded
 // face misses it, so the decoded box always holds every point recorded.
 //
-// Extents move between depths when OctoMap prunes eight equal leaves into
+// Points become extents at the finest depth (PointSlots); extents move
+// between depths when OctoMap prunes eight equal leaves into
 // their parent or expands a pruned leaf: a child's slot s lies in the
 // parent's slot (s + 32 * side) / 2 (exact, no rounding), and a parent's
 // slot p covers the child's slots 2 (p - 16 side) and the next one.
 #pragma once
 
 #include "geometry/aabb.hpp"
+#include "octree/octree_view.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -38,29 +40,29 @@ inline uint32_t pack(const int lo_slot[3], const int hi_slot[3]) {
     return packed;
 }
 
-// The faces obstacle_box (octree_cell.hpp) decodes, unpadded: the lower and
-// the upper face of slot `s` of a cube whose x edge is `edge` (the decoder
-// takes the x edge for every axis).
-inline double slot_lower_face(double cube_lo, double edge, int s) { return cube_lo + edge * (1.0 / 32) * s; }
-inline double slot_upper_face(double cube_lo, double edge, int s) {
-    return cube_lo + edge * (1.0 / 32) * (s + 1);
-}
+// A point's slots in a finest cell, per axis: the slot of the point moved
+// down and up by kSlack slots.  The slack is far above the rounding of
+// the arithmetic here (coordinates within 2^15 cells of the origin:
+// ~1e-10 slots) and far below the padding the engines decode a box with
+// (obstacle_box_pad: ~1e-6 slots), so the decoded box holds the point.  A
+// point just outside the cell (rounding of its key) takes the face slot.
+class PointSlots {
+public:
+    explicit PointSlots(double resolution) : resolution_(resolution), per_metre_(kSlots / resolution) {}
 
-// The extent of one point in a leaf's cube (the point lies in the cube up
-// to rounding; a point just outside is held by the nearest slot).
-inline uint32_t of_point(const Aabb &cube, const Vec3 &point) {
-    int lo_slot[3], hi_slot[3];
-    const double edge = cube.hi.x() - cube.lo.x();
-    for (int axis = 0; axis < 3; ++axis) {
-        const double t = (point[axis] - cube.lo[axis]) / edge * kSlots;
-        int s = t >= kSlots ? kSlots - 1 : (t > 0.0 ? static_cast<int>(t) : 0);
-        int first = s, last = s;
-        while (first > 0 && slot_lower_face(cube.lo[axis], edge, first) > point[axis]) --first;
-        while (last < kSlots - 1 && slot_upper_face(cube.lo[axis], edge, last) < point[axis]) ++last;
-        lo_slot[axis] = first, hi_slot[axis] = last;
+    // key: the cell's integer key on the axis; coordinate: the point's.
+    void of(uint16_t key, double coordinate, int &lo_slot, int &hi_slot) const {
+        const double cell_lo = static_cast<double>(static_cast<int32_t>(key) - kKeyCenter) * resolution_;
+        const double t = (coordinate - cell_lo) * per_metre_;
+        lo_slot = clamp(static_cast<int>(t - kSlack));
+        hi_slot = clamp(static_cast<int>(t + kSlack));
     }
-    return pack(lo_slot, hi_slot);
-}
+
+private:
+    static constexpr double kSlack = 1e-7;
+    static int clamp(int s) { return s < 0 ? 0 : (s > kSlots - 1 ? kSlots - 1 : s); }
+    double resolution_, per_metre_;
+};
 
 // The union of two valid extents of one cube.
 inline uint32_t merge(uint32_t a, uint32_t b) {

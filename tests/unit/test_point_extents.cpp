@@ -6,6 +6,7 @@
 // follows the rules on OctoMap's own map of the same frames.
 #include "octree/bounded_tree.hpp"
 #include "base/error.hpp"
+#include "broadphase/morton.hpp"
 #include "octree/octomap_io.hpp"
 #include "octree/octoprox_map_io.hpp"
 #include "octree/octree_cell.hpp"
@@ -78,23 +79,24 @@ TEST(PointExtents, PackingHoldsEveryPoint) {
         const double res = std::pow(10.0, -3.0 + 3.0 * unit(rng));
         CellKey key;
         for (int a = 0; a < 3; ++a) key.key[a] = static_cast<uint16_t>(rng() & 0xFFFF);
-        key.depth = 16 - static_cast<int>(rng() % 4);
-        const int width = key.width_in_cells();
-        for (int a = 0; a < 3; ++a) key.key[a] = static_cast<uint16_t>(key.key[a] / width * width);
+        key.depth = 16;
         const Aabb cube = octoprox::cell_box(key, res);
+        const extent::PointSlots slots(res);
         Vec3 p;
+        int lo[3], hi[3];
         for (int a = 0; a < 3; ++a) {
             // Faces and slot boundaries now and then.
             const double t = i % 5 == 0 ? std::floor(unit(rng) * 33) / 32 : unit(rng);
-            p[a] = cube.lo[a] + t * (cube.hi[a] - cube.lo[a]);
-            p[a] = std::min(std::max(p[a], cube.lo[a]), cube.hi[a]);
+            p[a] = std::min(std::max(cube.lo[a] + t * (cube.hi[a] - cube.lo[a]), cube.lo[a]), cube.hi[a]);
+            slots.of(key.key[a], p[a], lo[a], hi[a]);
         }
-        const uint32_t packed = extent::of_point(cube, p);
+        const uint32_t packed = extent::pack(lo, hi);
         ASSERT_TRUE(holds(decoded(cube, packed), p)) << "point " << p.transpose() << " resolution " << res;
-        // Up a level and down again, the box still holds the point.
-        const int child = (key.key[0] / width & 1) | ((key.key[1] / width & 1) << 1) | ((key.key[2] / width & 1) << 2);
-        const uint32_t round_trip = extent::to_child(extent::to_parent(packed, child), child);
-        ASSERT_TRUE(holds(decoded(cube, round_trip), p));
+        // Up the levels of a pruned leaf and down again, the box still holds the point.
+        const uint64_t code = octoprox::morton_encode(key.key[0], key.key[1], key.key[2]);
+        uint32_t moved = extent::lift(packed, code, 3);
+        for (int level = 2; level >= 0; --level) moved = extent::to_child(moved, int((code >> (3 * level)) & 7));
+        ASSERT_TRUE(holds(decoded(cube, moved), p));
     }
 }
 
