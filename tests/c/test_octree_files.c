@@ -98,6 +98,36 @@ static void ot_file_keeps_probabilities(void **state) {
     remove(path);
 }
 
+/* .opx keeps every log-odds and the occupied cells' point extents; the
+ * same map as .ot keeps the log-odds only. */
+static void opx_file_keeps_point_extents(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    opx_octree_stats before = OPX_OCTREE_STATS_INIT, opx = OPX_OCTREE_STATS_INIT, ot = OPX_OCTREE_STATS_INIT;
+    assert_ok(opx_octree_get_stats(tree, &before));
+    assert_true(before.leaves_with_extent > 0);
+    assert_ok(opx_octree_save_file(tree, "c_octree_files_extents.opx", OPX_FORMAT_AUTO));
+    assert_ok(opx_octree_save_file(tree, "c_octree_files_extents.ot", OPX_FORMAT_AUTO));
+    opx_octree *from_opx = NULL, *from_ot = NULL;
+    assert_ok(opx_octree_load_file("c_octree_files_extents.opx", NULL, &from_opx));
+    assert_ok(opx_octree_load_file("c_octree_files_extents.ot", NULL, &from_ot));
+    assert_ok(opx_octree_get_stats(from_opx, &opx));
+    assert_ok(opx_octree_get_stats(from_ot, &ot));
+    assert_int_equal(opx.leaves_with_extent, before.leaves_with_extent);
+    assert_int_equal(ot.leaves_with_extent, 0);
+    size_t n = 0, m = 0;
+    opx_leaf *got = all_leaves(from_opx, OPX_MASK_ALL_KNOWN, &n);
+    opx_leaf *want = all_leaves(tree, OPX_MASK_ALL_KNOWN, &m);
+    assert_same_leaves(got, n, want, m);
+    free(got);
+    free(want);
+    opx_octree_destroy(from_opx);
+    opx_octree_destroy(from_ot);
+    opx_octree_destroy(tree);
+    remove("c_octree_files_extents.opx");
+    remove("c_octree_files_extents.ot");
+}
+
 static void save_file_rejects_bad_arguments(void **state) {
     (void)state;
     opx_octree *tree = new_sample_map();
@@ -106,7 +136,7 @@ static void save_file_rejects_bad_arguments(void **state) {
                    opx_octree_save_file(NULL, "c_octree_files_x.bt", OPX_FORMAT_AUTO));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "path",
                    opx_octree_save_file(tree, NULL, OPX_FORMAT_BT));
-    const int32_t bad[] = {-1, 3, 42};
+    const int32_t bad[] = {-1, 4, 42};
     for (size_t i = 0; i < 3; ++i)
         expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "format",
                        opx_octree_save_file(tree, "c_octree_files_x.bt", bad[i]));
@@ -211,6 +241,7 @@ int main(void) {
         cmocka_unit_test(save_auto_picks_format_by_extension),
         cmocka_unit_test(explicit_format_wins_over_extension),
         cmocka_unit_test(ot_file_keeps_probabilities),
+        cmocka_unit_test(opx_file_keeps_point_extents),
         cmocka_unit_test(save_file_rejects_bad_arguments),
         cmocka_unit_test(save_file_into_missing_directory_is_io_error),
         cmocka_unit_test(load_missing_file_is_io_error),

@@ -168,7 +168,7 @@ static void save_memory_rejects_bad_arguments(void **state) {
                    opx_octree_save_memory(tree, OPX_FORMAT_BT, buffer, sizeof buffer, NULL));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "buffer",
                    opx_octree_save_memory(tree, OPX_FORMAT_BT, NULL, 16, &size));
-    const int32_t bad[] = {-1, 3, 99};
+    const int32_t bad[] = {-1, 4, 99};
     for (size_t i = 0; i < 3; ++i)
         expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "format",
                        opx_octree_save_memory(tree, bad[i], buffer, sizeof buffer, &size));

@@ -184,7 +184,7 @@ static void bad_command_lines_exit_2(void **state) {
     snprintf(line, sizeof line, "ingest '%s'", cloud);
     expect_usage_error(line, "no output map");
     snprintf(line, sizeof line, "ingest '%s' -o x.txt", cloud);
-    expect_usage_error(line, "must end in .bt or .ot");
+    expect_usage_error(line, "must end in .bt, .ot or .opx");
     snprintf(line, sizeof line, "ingest '%s' -o x.bt --sensor-pose 1,2", cloud);
     expect_usage_error(line, "--sensor-pose needs");
     snprintf(line, sizeof line, "ingest '%s' -o x.bt --sensor-pose 1,2,3,0,0,0,0", cloud);

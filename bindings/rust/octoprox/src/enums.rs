@@ -121,16 +121,20 @@ c_enum! {
 }
 
 c_enum! {
-    /// OctoMap file formats, for saving and loading maps.
+    /// Map file formats, for saving and loading maps.
     MapFormat {
-        /// Saving: by the path's extension (`.bt` or `.ot`), BT for memory.
-        /// Loading reads the header.
+        /// Saving: by the path's extension (`.bt`, `.ot` or `.opx`), BT for
+        /// memory.  Loading reads the header.
         Auto = sys::OPX_FORMAT_AUTO,
         /// OctoMap binary (`.bt`): per leaf only occupied or free; a loaded
         /// leaf gets the clamping bound of its class as probability.
         Bt = sys::OPX_FORMAT_BT,
         /// OctoMap full (`.ot`, type "OcTree"): the log-odds of every node.
         Ot = sys::OPX_FORMAT_OT,
+        /// OctoProx map (`.opx`): the `.ot` content and every occupied
+        /// leaf's point extent ([`ObstacleGeometry::PointExtents`]), which
+        /// `.bt` and `.ot` cannot hold.
+        Opx = sys::OPX_FORMAT_OPX,
     }
 }
 
@@ -289,6 +293,7 @@ mod tests {
         assert_eq!(ObstacleGeometry::from_raw(sys::OPX_OBSTACLE_CELLS), Some(ObstacleGeometry::Cells));
         assert_eq!(Engine::from_raw(sys::OPX_ENGINE_AMORTIZED), Some(Engine::Amortized));
         assert_eq!(MapFormat::Ot.raw(), sys::OPX_FORMAT_OT);
+        assert_eq!(MapFormat::Opx.raw(), sys::OPX_FORMAT_OPX);
     }
 
     #[test]

@@ -197,8 +197,8 @@ impl Octree {
         leaves.iter().map(Leaf::from_c).collect()
     }
 
-    /// Saves to a file: [`MapFormat::Auto`] picks by the extension (`.bt`
-    /// or `.ot`; another is an [`crate::ErrorKind::InvalidArgument`]).
+    /// Saves to a file: [`MapFormat::Auto`] picks by the extension (`.bt`,
+    /// `.ot` or `.opx`; another is an [`crate::ErrorKind::InvalidArgument`]).
     /// [`crate::ErrorKind::Io`] when the file cannot be written.
     pub fn save_file(&self, path: impl AsRef<Path>, format: MapFormat) -> Result<()> {
         let text = path.as_ref().to_string_lossy().into_owned();

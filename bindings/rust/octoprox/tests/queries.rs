@@ -2,8 +2,8 @@
 //! (tests/c/test_query_collide.c, _distance.c, _cost.c, _path.c).
 mod common;
 use common::*;
-use octoprox::{pose_at, CellClass, CollisionRequest, DistanceRequest, Engine, InsertMode, LinkSet,
-               PathRequest, Query, QueryOptions, Shape, ShapeKind, UnknownPolicy};
+use octoprox::{pose_at, CellClass, CollisionRequest, DistanceRequest, Engine, InsertMode, LinkSet, MapFormat,
+               ObstacleGeometry, Octree, PathRequest, Query, QueryOptions, Shape, ShapeKind, UnknownPolicy};
 
 fn new_query() -> Query {
     Query::new(&QueryOptions::default()).unwrap()
@@ -187,4 +187,30 @@ fn caller_boxes_answer_like_the_cell_they_copy() {
     // A direct context refuses boxes; NaN is refused.
     assert!(new_query().bind_boxes(&[[0.0; 6]]).is_err());
     assert!(query.bind_boxes(&[[0.0, 0.0, 0.0, 1.0, f64::NAN, 1.0]]).is_err());
+}
+
+#[test]
+fn point_extents_keep_the_space_between_a_point_and_its_cell_face() {
+    // One point at the centre of the cell [0, RES]^3: the sphere 0.1 m past
+    // the face touches the cube but not the point's box.
+    let tree = one_cell_map();
+    let links = sphere_at(0.05, RES + 0.049, C0, C0);
+    let mut query = new_query();
+    let cells = CollisionRequest::default();
+    let extents = CollisionRequest { obstacle_geometry: ObstacleGeometry::PointExtents, ..Default::default() };
+    assert!(query.collide(&tree, &links, &cells).unwrap().collided);
+    assert!(!query.collide(&tree, &links, &extents).unwrap().collided);
+    let near = DistanceRequest { obstacle_geometry: ObstacleGeometry::PointExtents, ..Default::default() };
+    let d = query.distance(&tree, &links, &near).unwrap();
+    // Never beyond the point, and short of it by at most the box's slack:
+    // the box is the point's slots of 1/32 cell, rounded outward.
+    let to_point = RES + 0.049 - 0.05 - C0;
+    assert!(d.distance <= to_point && d.distance > to_point - 2.0 * RES / 32.0, "distance {}", d.distance);
+    // An .opx image keeps the extent, an .ot image does not.
+    let opx = Octree::load_memory(&tree.save_memory(MapFormat::Opx).unwrap(), &Default::default()).unwrap();
+    assert_eq!(opx.stats().unwrap().leaves_with_extent, 1);
+    assert!(!query.collide(&opx, &links, &extents).unwrap().collided);
+    let ot = Octree::load_memory(&tree.save_memory(MapFormat::Ot).unwrap(), &Default::default()).unwrap();
+    assert_eq!(ot.stats().unwrap().leaves_with_extent, 0);
+    assert!(query.collide(&ot, &links, &extents).unwrap().collided);
 }
