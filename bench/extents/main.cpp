@@ -73,28 +73,44 @@ struct ModelResult {
     double us_per_configuration = 0.0;
 };
 
-ModelResult check_model(opx_query *query, const opx_octree *tree, const opx_linkset *arm,
-                        const Configurations &set, int32_t geometry, int rounds) {
+// One check of every configuration under `geometry`: the answers, and
+// the microseconds per configuration.
+double check_all(opx_query *query, const opx_octree *tree, const opx_linkset *arm, const Configurations &set,
+                 int32_t geometry, std::vector<uint8_t> &collided) {
     const size_t n = set.exact.size();
-    std::vector<uint8_t> collided(n);
+    collided.assign(n, 0);
     opx_batch_request request = OPX_BATCH_REQUEST_INIT;
     request.obstacle_geometry = geometry;
-    double best = 1e300;
-    for (int r = 0; r < rounds; ++r) {
-        const auto start = std::chrono::steady_clock::now();
-        check(opx_query_check_configurations(query, tree, arm, set.rows.data(), n, kJoints, 0, nullptr, 0, 0, &request,
-                                             collided.data(), nullptr, n),
-              "check_configurations");
-        best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
-    }
+    const auto start = std::chrono::steady_clock::now();
+    check(opx_query_check_configurations(query, tree, arm, set.rows.data(), n, kJoints, 0, nullptr, 0, 0, &request,
+                                         collided.data(), nullptr, n),
+          "check_configurations");
+    return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count() / double(n);
+}
+
+ModelResult tally(const Configurations &set, const std::vector<uint8_t> &collided, double us) {
     ModelResult out;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < set.exact.size(); ++i) {
         out.free += collided[i] == 0;
         out.kept += collided[i] == 0 && !set.exact[i];
         out.misses += collided[i] == 0 && set.exact[i];
     }
-    out.us_per_configuration = best / double(n);
+    out.us_per_configuration = us;
     return out;
+}
+
+// Both models, their rounds interleaved (a change of the machine's load
+// hits them alike), the fastest round of each.
+void check_models(opx_query *query, const opx_octree *tree, const opx_linkset *arm, const Configurations &set,
+                  int rounds, ModelResult &cells, ModelResult &extents) {
+    std::vector<uint8_t> by_cells, by_extents;
+    double cells_us = 1e300, extents_us = 1e300;
+    for (int r = 0; r < rounds; ++r) {
+        cells_us = std::min(cells_us, check_all(query, tree, arm, set, OPX_OBSTACLE_CELLS, by_cells));
+        extents_us = std::min(extents_us, check_all(query, tree, arm, set, OPX_OBSTACLE_POINT_EXTENTS, by_extents));
+    }
+    cells = tally(set, by_cells, cells_us);
+    extents = tally(set, by_extents, extents_us);
 }
 
 struct Row {
@@ -188,8 +204,8 @@ int main(int argc, char **argv) {
                 opx_octree *tree = map_of(sample_surfaces(scene, kSpacing), resolution);
                 opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
                 check(opx_octree_get_stats(tree, &stats), "get_stats");
-                const ModelResult cells = check_model(query, tree, arm, set, OPX_OBSTACLE_CELLS, rounds);
-                const ModelResult extents = check_model(query, tree, arm, set, OPX_OBSTACLE_POINT_EXTENTS, rounds);
+                ModelResult cells, extents;
+                check_models(query, tree, arm, set, rounds, cells, extents);
                 total.configurations += set.exact.size();
                 for (uint8_t e : set.exact) total.exact_free += e == 0;
                 total.occupied += stats.leaves_occupied, total.with_extent += stats.leaves_with_extent;
