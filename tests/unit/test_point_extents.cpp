@@ -280,3 +280,43 @@ TEST(PointExtents, OctoProxMapFilesKeepThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// A surface sampled every 5 mm makes extents as thin as the samples, not as
+// thick as the cells: for an axis-aligned plane one slot (res / 32) across
+// the plane, and together the boxes cover the sampled patch.
+TEST(PointExtents, ASampledPlaneIsOneSlotThick) {
+    octoprox::OctreeParams params;
+    params.resolution = 0.02;
+    SensorOctree tree(params);
+    std::vector<Vec3> plane;
+    const double z = 0.3137;
+    for (double x = 0.0; x <= 0.5; x += 0.005)
+        for (double y = 0.0; y <= 0.4; y += 0.005) plane.emplace_back(x, y, z);
+    octoprox::InsertSettings settings;
+    settings.raycast = false;
+    std::vector<double> xyz;
+    for (const Vec3 &p : plane) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    unit::insert_xyz(tree, xyz, settings);
+    double area = 0.0;
+    size_t leaves = 0;
+    octoprox::for_each_leaf(tree.view(), [&](OctreeView::NodeRef node, const CellKey &cell) {
+        if (tree.view().log_odds(node) < 0.0f) return;
+        ++leaves;
+        const uint32_t packed = tree.view().point_extent(node);
+        ASSERT_TRUE(extent::valid(packed));
+        const Aabb box = decoded(octoprox::cell_box(cell, params.resolution), packed);
+        EXPECT_LE(box.hi.z() - box.lo.z(), params.resolution / 32 + 1e-8) << "thicker than a slot and its padding";
+        EXPECT_TRUE(box.lo.z() <= z && z <= box.hi.z());
+        area += (box.hi.x() - box.lo.x()) * (box.hi.y() - box.lo.y());
+    });
+    EXPECT_EQ(tree.stats().leaves_with_extent, leaves);
+    // The boxes cover the patch but for the gaps between samples at cell
+    // borders (less than one spacing, 5 mm of every 20), and overhang by
+    // no more than a slot.
+    EXPECT_GT(area, 0.5 * 0.4 * (1 - 0.005 / 0.02) * (1 - 0.005 / 0.02));
+    EXPECT_LT(area, 0.52 * 0.42);
+}
+
+}  // namespace
