@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "pipelines.hpp"
@@ -75,9 +76,17 @@ void sphere_rows(Robot &arm, const Scene &scene, const RunOptions &options, std:
     rows.push_back(Row{arm.name, scene.name, "batch 1 thread", a.us_per_configuration,
                        {{"ns_per_sphere", a.ns_per_sphere}, {"configurations", double(a.configurations)},
                         {"collided", double(a.collided)}}});
-    const SphereCallTiming s = time_single_sphere_calls(scene, options.configurations, options.rounds);
+    const SphereCallTiming s = time_single_sphere_calls(scene, options.configurations, options.rounds, false);
     rows.push_back(Row{"sphere", scene.name, "single sphere call", s.ns_per_call / 1000.0,
                        {{"ns_per_call", s.ns_per_call}, {"calls", double(s.calls)}, {"collided", double(s.collided)}}});
+    const SphereCallTiming l = time_single_sphere_calls(scene, options.configurations, options.rounds, true);
+    rows.push_back(Row{"sphere", scene.name, "single sphere link set call", l.ns_per_call / 1000.0,
+                       {{"ns_per_call", l.ns_per_call}, {"calls", double(l.calls)}, {"collided", double(l.collided)}}});
+    if (s.collided != l.collided) {
+        std::fprintf(stderr, "opx-bench-batch: single spheres: %zu collided through opx_query_collide_spheres, %zu "
+                             "through a link set\n", s.collided, l.collided);
+        std::exit(1);
+    }
 }
 
 void print_scene(const Scene &scene) {

@@ -51,23 +51,32 @@ SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, in
     return out;
 }
 
-SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds) {
+SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds, bool link_set) {
     const std::vector<opx_pose> poses = sphere_poses(scene.tree.get(), count);
     const paper_tables::OpxLinksetPtr sphere = one_sphere();
     const paper_tables::OpxQueryPtr query = paper_tables::make_direct_query();
     opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
     request.max_contacts = 0;
+    std::vector<double> rows;
+    for (const opx_pose &pose : poses) rows.insert(rows.end(), {pose.position[0], pose.position[1], pose.position[2], kSphereRadius});
     SphereCallTiming out;
     out.calls = count;
+    auto through_link_set = [&](size_t i) {
+        check_opx(opx_linkset_set_poses(sphere.get(), &poses[i], 1, 0), "opx_linkset_set_poses");
+        opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+        check_opx(opx_query_collide(query.get(), scene.tree.get(), sphere.get(), &request, &result),
+                  "opx_query_collide");
+        return result.collided != 0;
+    };
+    auto through_spheres_call = [&](size_t i) {
+        uint8_t collided = 0;
+        check_opx(opx_query_collide_spheres(query.get(), scene.tree.get(), &rows[4 * i], 1, 0, nullptr, &collided, 1),
+                  "opx_query_collide_spheres");
+        return collided != 0;
+    };
     auto run = [&] {
         size_t collided = 0;
-        for (const opx_pose &pose : poses) {
-            check_opx(opx_linkset_set_poses(sphere.get(), &pose, 1, 0), "opx_linkset_set_poses");
-            opx_collision_result result = OPX_COLLISION_RESULT_INIT;
-            check_opx(opx_query_collide(query.get(), scene.tree.get(), sphere.get(), &request, &result),
-                      "opx_query_collide");
-            collided += static_cast<size_t>(result.collided);
-        }
+        for (size_t i = 0; i < poses.size(); ++i) collided += link_set ? through_link_set(i) : through_spheres_call(i);
         out.collided = collided;
     };
     run();

@@ -1,7 +1,8 @@
 // The sphere rows of opx-bench-batch: the 50-sphere arm against the real
 // frame at 2 cm through the batch call on one thread (ns per sphere), and
-// one sphere per call (set its pose, then opx_query_collide through the C
-// API: ns per call), the two ways sphere-based planners ask.
+// one sphere per C call (ns per call), the two ways sphere-based planners
+// ask: opx_query_collide_spheres with one sphere, and a one-sphere link set
+// (set its pose, then opx_query_collide).
 #pragma once
 
 #include "configurations.hpp"
@@ -20,7 +21,8 @@ struct SphereCallTiming {
     size_t calls = 0, collided = 0;
 };
 
-// Spheres of 5 cm radius uniform in the box of the occupied cells.
-SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds);
+// Spheres of 5 cm radius uniform in the box of the occupied cells;
+// `link_set`: through a one-sphere link set, else opx_query_collide_spheres.
+SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds, bool link_set);
 
 }  // namespace batch_bench

@@ -10,6 +10,7 @@
 #include "self_collision.h"
 #include "world.h"
 #include "batch.h"
+#include "spheres.h"
 #include "io.h"
 
 #endif /* OCTOPROX_OCTOPROX_H */
