@@ -32,10 +32,10 @@ from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionRe
                        PairSamplingOptions, PairSamplingResult, PathRequest, PathResult,
                        PointCloudInfo, Pose, QueryOptions, QueryStats, SelfCollisionRequest,
                        SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult,
-                       UrdfOptions)
+                       SphereRequest, UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
-from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
+from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OPX, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
                      MASK_OCCUPIED, MASK_UNCERTAIN, Octree)
 from .robot import (JOINT_CONTINUOUS, JOINT_FIXED, JOINT_FLOATING, JOINT_NONE, JOINT_PLANAR,
                     JOINT_PRISMATIC, JOINT_REVOLUTE)
@@ -78,14 +78,14 @@ __all__ = [
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
     "OctreeStats", "PairSamplingOptions", "PairSamplingResult", "PathRequest", "PathResult", "PointCloudInfo", "Pose",
     "QueryOptions", "QueryStats", "SelfCollisionRequest", "SelfCollisionResult", "SelfContact",
-    "SelfDistanceRequest", "SelfDistanceResult", "UrdfOptions",
+    "SelfDistanceRequest", "SelfDistanceResult", "SphereRequest", "UrdfOptions",
     # exceptions
     "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
     "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",
     # constants (members of the named values above)
     "CELL_UNKNOWN", "CELL_FREE", "CELL_UNCERTAIN", "CELL_OCCUPIED", "INSERT_RAYCAST",
     "INSERT_ENDPOINTS", "MASK_FREE", "MASK_UNCERTAIN", "MASK_OCCUPIED", "MASK_ALL_KNOWN",
-    "FORMAT_AUTO", "FORMAT_BT", "FORMAT_OT", "ENGINE_DIRECT", "ENGINE_AMORTIZED",
+    "FORMAT_AUTO", "FORMAT_BT", "FORMAT_OT", "FORMAT_OPX", "ENGINE_DIRECT", "ENGINE_AMORTIZED",
     "UNKNOWN_FREE", "UNKNOWN_OCCUPIED", "OBSTACLE_CELLS", "OBSTACLE_POINT_EXTENTS",
     "ALL_CONTACTS", "JOINT_FIXED", "JOINT_REVOLUTE", "JOINT_CONTINUOUS",
     "JOINT_PRISMATIC", "JOINT_FLOATING", "JOINT_PLANAR", "JOINT_NONE", "SHAPE_SPHERE",

@@ -62,12 +62,16 @@ class InsertMode(_Named):
 
 
 class FileFormat(_Named):
-    """OctoMap file formats.  AUTO: loading reads the header, saving picks
-    by the extension (.bt or .ot; BT for bytes).  BT: binary, per leaf
-    only occupied or free.  OT: full, the log-odds of every node."""
+    """Map file formats.  AUTO: loading reads the header, saving picks by
+    the extension (.bt, .ot or .opx; BT for bytes).  BT: OctoMap binary,
+    per leaf only occupied or free.  OT: OctoMap full, the log-odds of
+    every node.  OPX: OctoProx map, the .ot content and every occupied
+    cell's point extent (ObstacleGeometry.POINT_EXTENTS), which .bt and
+    .ot cannot hold."""
     AUTO = 0
     BT = 1
     OT = 2
+    OPX = 3
 
 
 class Engine(_Named):

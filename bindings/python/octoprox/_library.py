@@ -168,6 +168,10 @@ SIGNATURES = {
     "opx_query_check_motions": (status, [handle, handle, handle, c_void_p, c_void_p, c_size_t,
                                          c_size_t, c_size_t, c_void_p, c_size_t, c_size_t,
                                          P(s.MotionRequest), c_void_p, c_void_p, c_size_t]),
+    # spheres.h
+    "opx_sphere_request_init": (status, [P(s.SphereRequest), c_size_t]),
+    "opx_query_collide_spheres": (status, [handle, handle, c_void_p, c_size_t, c_size_t,
+                                           P(s.SphereRequest), c_void_p, c_size_t]),
     # io.h
     "opx_point_cloud_read_file": (status, [c_char_p, P(handle)]),
     "opx_point_cloud_destroy": (None, [handle]),

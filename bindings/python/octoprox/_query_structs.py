@@ -140,6 +140,14 @@ class SelfContact(Struct):
                 ("depth", c_double), ("normal", D3), ("position", D3)]
 
 
+class SphereRequest(Struct):
+    """The options of Query.collide_spheres: unknown_policy,
+    occupancy_threshold (0: the octree's), obstacle_geometry."""
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("obstacle_geometry", c_int32),
+                ("reserved0", c_int32)]
+
+
 class SelfDistanceRequest(Struct):
     """The options of Query.self_distance: signed_distance (overlap as
     minus the deepest penetration), cutoff (m; pairs farther are not
@@ -239,6 +247,7 @@ typed_fields(DistanceResult, found=bool, collided=bool, cell_class=_CELL)
 typed_fields(SelfCollisionRequest, compute_penetration=bool)
 typed_fields(SelfCollisionResult, collided=bool, truncated=bool)
 typed_fields(SelfDistanceRequest, signed_distance=bool)
+typed_fields(SphereRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
 typed_fields(SelfDistanceResult, found=bool, collided=bool)
 typed_fields(PathRequest, unknown_policy=_POLICY, compute_distance=bool, compute_cost=bool,
              obstacle_geometry=_GEOMETRY)

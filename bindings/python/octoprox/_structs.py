@@ -15,7 +15,7 @@ from ._query_structs import (BatchRequest, CollisionRequest, CollisionResult, Co
                              DistanceRequest, DistanceResult, MotionRequest, MotionResult,
                              PathRequest, PathResult, QueryOptions, QueryStats,
                              SelfCollisionRequest, SelfCollisionResult, SelfContact,
-                             SelfDistanceRequest, SelfDistanceResult)
+                             SelfDistanceRequest, SelfDistanceResult, SphereRequest)
 from ._struct_base import D3, Pose, Struct, typed_fields
 
 
@@ -200,6 +200,7 @@ VERSIONED = {
     SelfCollisionResult: "opx_self_collision_result_init",
     SelfContact: "opx_self_contact_init",
     SelfDistanceRequest: "opx_self_distance_request_init",
+    SphereRequest: "opx_sphere_request_init",
     SelfDistanceResult: "opx_self_distance_result_init",
     PairSamplingOptions: "opx_pair_sampling_options_init",
     PairSamplingResult: "opx_pair_sampling_result_init",

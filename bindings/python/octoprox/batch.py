@@ -1,5 +1,6 @@
 """Many configurations and joint-space motions per call (batch.h):
-Query.check_configurations, check_motion and check_motions (Query inherits
+Query.check_configurations, check_motion and check_motions, and many
+spheres per call (spheres.h): Query.collide_spheres (Query inherits
 them).
 
 The robot is a LinkSet made from URDF.  Joint vectors are rows of the
@@ -44,6 +45,7 @@ _MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshol
            "obstacle_geometry", "joint_order")
 _MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
             "occupancy_threshold", "obstacle_geometry", "joint_order")
+_SPHERES = ("unknown_policy", "occupancy_threshold", "obstacle_geometry")
 
 
 def joint_rows(q, where):
@@ -98,6 +100,41 @@ class BatchQueries:
                                                     "Query.check_configurations")
         self._motion_requests = RequestCache(s.MotionRequest, _MOTION, "Query.check_motion")
         self._motions_requests = RequestCache(s.MotionRequest, _MOTIONS, "Query.check_motions")
+        self._sphere_requests = RequestCache(s.SphereRequest, _SPHERES, "Query.collide_spheres")
+
+    @api("Query.collide_spheres")
+    def collide_spheres(self, tree: Octree, spheres: ArrayLike, *,
+                        unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                        occupancy_threshold: float = 0.0,
+                        obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                        ) -> np.ndarray:
+        """Checks spheres against the map, each on its own, as
+        Query.collide answers a LinkSet holding that sphere alone, without
+        a LinkSet to place: the robot model of sphere-based planners.
+
+        spheres: an (N, 4) array of rows x, y, z, radius (map frame,
+          metres; radius >= 0: 0 is a point).
+        unknown_policy, occupancy_threshold, obstacle_geometry: as
+          Query.collide.  The query's engine and world play no part.
+
+        Returns a numpy bool array of N collided flags.  Raises
+        InvalidArgumentError naming the row of a non-finite value or a
+        negative radius, and for an empty array.
+        """
+        if not isinstance(tree, Octree):
+            raise TypeError(f"Query.collide_spheres: expected an Octree, got {type(tree).__name__}")
+        rows = np.ascontiguousarray(spheres, dtype=np.float64)
+        if rows.ndim == 1:
+            rows = rows.reshape(1, -1)
+        if rows.ndim != 2 or rows.shape[1] != 4:
+            raise invalid(f"spheres must have shape (N, 4) (x, y, z, radius), got {rows.shape}",
+                          "Query.collide_spheres")
+        n = len(rows)
+        collided = np.zeros(n, dtype=np.bool_)
+        request = self._sphere_requests.lookup((unknown_policy, occupancy_threshold, obstacle_geometry))
+        lib.opx_query_collide_spheres(self, tree, rows.ctypes.data, n, 0, request,
+                                      collided.ctypes.data, n)
+        return collided
 
     @api("Query.check_configurations")
     def check_configurations(self, tree: Octree, robot: LinkSet, q: ArrayLike, threads: int = 1,

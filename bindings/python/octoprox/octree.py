@@ -25,7 +25,7 @@ from ._types import ArrayLike, FileFormatLike, InsertModeLike, PathLike, PoseLik
 
 MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = CellMask.FREE, CellMask.UNCERTAIN, CellMask.OCCUPIED
 MASK_ALL_KNOWN = CellMask.ALL_KNOWN
-FORMAT_AUTO, FORMAT_BT, FORMAT_OT = FileFormat.AUTO, FileFormat.BT, FileFormat.OT
+FORMAT_AUTO, FORMAT_BT, FORMAT_OT, FORMAT_OPX = FileFormat.AUTO, FileFormat.BT, FileFormat.OT, FileFormat.OPX
 # The options a map file does not hold (its resolution it does).
 _PROBABILITIES = ("prob_hit", "prob_miss", "clamp_min", "clamp_max", "occupied_threshold",
                   "free_threshold")
@@ -141,7 +141,7 @@ class Octree(Handle):
 
     def __reduce__(self):
         options = self.options
-        return (_unpickle, (self.to_bytes(FileFormat.OT),
+        return (_unpickle, (self.to_bytes(FileFormat.OPX),
                             {name: getattr(options, name) for name in _PROBABILITIES}))
 
     @api("Octree.clear")
@@ -250,15 +250,18 @@ class Octree(Handle):
 
     @api("Octree.save")
     def save(self, path: PathLike, format: FileFormatLike = FileFormat.AUTO) -> None:
-        """Saves to a .bt or .ot file (format AUTO: by the extension).
-        Raises IoError when the file cannot be written."""
+        """Saves to a .bt, .ot or .opx file (format AUTO: by the
+        extension; .opx keeps the point extents).  Raises IoError when the
+        file cannot be written."""
         lib.opx_octree_save_file(self, _path(path), FileFormat.parse(format, "Octree.save",
                                                                       "format"))
 
     @api("Octree.to_bytes")
     def to_bytes(self, format: FileFormatLike = FileFormat.BT) -> bytes:
-        """The bytes of a .bt file (the default: classes only) or, with
-        FileFormat.OT, of a .ot file (every probability)."""
+        """The bytes of a .bt file (the default: classes only), with
+        FileFormat.OT of a .ot file (every probability), with
+        FileFormat.OPX of a .opx file (every probability and the occupied
+        cells' point extents; pickling uses it)."""
         format = FileFormat.parse(format, "Octree.to_bytes", "format")
         size = ctypes.c_size_t(needed_count(lib.opx_octree_save_memory, self, format))
         buffer = ctypes.create_string_buffer(size.value)
