@@ -75,6 +75,7 @@ default_from_init! {
     opx_urdf_options => opx_urdf_options_init,
     opx_joint_info => opx_joint_info_init,
     opx_point_cloud_info => opx_point_cloud_info_init,
+    opx_sphere_request => opx_sphere_request_init,
 }
 
 impl Default for opx_pose {

@@ -71,6 +71,7 @@ mod results;
 mod robot;
 mod self_collision;
 mod self_types;
+mod spheres;
 mod world;
 
 pub use batch::{BasePoses, ConfigurationAnswers, MotionAnswers};
@@ -90,6 +91,7 @@ pub use results::{CollisionResult, Contact, CostBox, DistanceResult, PathResult,
 pub use robot::{JointInfo, JointType, UrdfOptions};
 pub use self_types::{PairSamplingOptions, PairSamplingResult, SelfCollisionRequest,
                      SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
+pub use spheres::SphereRequest;
 pub use world::{SceneFormat, World};
 
 use octoprox_sys as sys;
