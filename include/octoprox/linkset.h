@@ -104,7 +104,8 @@ OPX_API opx_status opx_linkset_set_padding(opx_linkset *links, double padding);
 OPX_API opx_status opx_linkset_set_link_padding(opx_linkset *links, uint32_t link,
                                                 double padding);
 /** Disabled links take part in no query (e.g. links the sensor cannot see,
- * or a gripper holding an object).  All links start enabled. */
+ * or a gripper holding an object), nor do the objects attached to them.
+ * All links start enabled. */
 OPX_API opx_status opx_linkset_set_link_enabled(opx_linkset *links, uint32_t link,
                                                 int32_t enabled);
 
@@ -136,6 +137,63 @@ OPX_API opx_status opx_linkset_get_pose(const opx_linkset *links, uint32_t link,
  * NULL). */
 OPX_API opx_status opx_linkset_get_poses(const opx_linkset *links, opx_pose *out_poses,
                                          size_t capacity, size_t *out_count);
+
+/* ---- Attached objects --------------------------------------------------- */
+/*
+ * An object attached to a link (MoveIt's attached collision object, e.g. a
+ * part the gripper holds) moves with the link: forward kinematics, poses,
+ * paths and batches move it.  Against the octree and world objects it is
+ * checked as the link's own shapes are (with the link's padding and
+ * enabled flag); contacts and distances name the link, the attached
+ * object (opx_contact.attached, opx_distance_result.attached) and the
+ * shape within it.  Against the robot (self-collision) it is checked with
+ * every link but the one it is attached to and its touch links (links it
+ * may touch, e.g. the gripper's fingers), whatever the link pairs say, and
+ * with the objects attached to other links.  Indices are positions:
+ * detaching an object moves every later one down by one.
+ */
+
+/**
+ * Attaches an object named `name` (copied; names need not be unique) to
+ * link `link`: `shape_count` (>= 1) shapes, each at its pose in the OBJECT
+ * frame (shapes[i].pose), the object frame at `pose` in the LINK frame
+ * (x y z qx qy qz qw; NULL: the link frame).  `touch_links` names
+ * `touch_link_count` links (each the first link of that name; may be NULL
+ * when the count is 0) the object may touch; the link it is attached to
+ * always may.  *out_object (may be NULL) gets its index.  On error
+ * nothing changes.
+ */
+OPX_API opx_status opx_linkset_attach_object(opx_linkset *links, uint32_t link, const char *name,
+                                             const opx_shape *shapes, size_t shape_count,
+                                             const opx_pose *pose, const char *const *touch_links,
+                                             size_t touch_link_count, uint32_t *out_object);
+/** Detaches (removes) attached object `object`; later ones move down by one. */
+OPX_API opx_status opx_linkset_detach_object(opx_linkset *links, uint32_t object);
+OPX_API opx_status opx_linkset_get_attached_count(const opx_linkset *links, uint32_t *out_count);
+/** The first attached object named `name`; OPX_ERROR_INVALID_ARGUMENT when none. */
+OPX_API opx_status opx_linkset_find_attached(const opx_linkset *links, const char *name,
+                                             uint32_t *out_object);
+/** The attached object's name; valid until the link set changes or is destroyed. */
+OPX_API opx_status opx_linkset_get_attached_name(const opx_linkset *links, uint32_t object,
+                                                 const char **out_name);
+/** The link the object is attached to. */
+OPX_API opx_status opx_linkset_get_attached_link(const opx_linkset *links, uint32_t object,
+                                                 uint32_t *out_link);
+/** The object frame in its link's frame (x y z qx qy qz qw). */
+OPX_API opx_status opx_linkset_get_attached_pose(const opx_linkset *links, uint32_t object,
+                                                 opx_pose *out_pose);
+OPX_API opx_status opx_linkset_get_attached_shape_count(const opx_linkset *links, uint32_t object,
+                                                        uint32_t *out_count);
+/** Shape `shape` of the attached object as it was given (its pose in the
+ * OBJECT frame); vertices and indices as in opx_linkset_get_shape. */
+OPX_API opx_status opx_linkset_get_attached_shape(const opx_linkset *links, uint32_t object,
+                                                  uint32_t shape, opx_shape *out_shape);
+/** The object's touch links (link indices, ascending; its own link not
+ * among them): *out_count gets their number; capacity below it:
+ * OPX_ERROR_BUFFER_TOO_SMALL (nothing written; out_links may then be NULL). */
+OPX_API opx_status opx_linkset_get_attached_touch_links(const opx_linkset *links, uint32_t object,
+                                                        uint32_t *out_links, size_t capacity,
+                                                        size_t *out_count);
 
 /*
  * Aliases kept for compatibility: each behaves exactly as the function

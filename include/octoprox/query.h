@@ -167,10 +167,15 @@ typedef struct opx_contact {
      * cell.  For an object the cell fields above are zeros. */
     int32_t object;
     uint32_t object_shape;  /**< the object's shape touched (0 for a cell) */
+    /** The object attached to the link (linkset.h, opx_linkset_attach_object:
+     * its index) whose shape touched, `shape` then being the shape's index
+     * within that object; -1: one of the link's own shapes. */
+    int32_t attached;
+    uint32_t reserved1;     /**< padding; 0 */
 } opx_contact;
 
 #define OPX_CONTACT_INIT {sizeof(opx_contact), 0, 0, 0, {0.0, 0.0, 0.0}, 0.0, 0.0, 0.0, \
-    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, -1, 0}
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, -1, 0, -1, 0}
 OPX_API opx_status opx_contact_init(opx_contact *contact, size_t size);
 
 /** A box of uncertain or unknown space overlapped by a link. */
@@ -263,10 +268,15 @@ typedef struct opx_distance_result {
      * lies on it and the cell fields are zeros), or -1 for a cell. */
     int32_t object;
     uint32_t object_shape;  /**< the object's nearest shape (0 for a cell) */
+    /** The object attached to `link` (linkset.h: its index) whose shape is
+     * the nearest, `shape` then being its index within that object; -1:
+     * one of the link's own shapes. */
+    int32_t attached;
+    uint32_t reserved0;     /**< padding; 0 */
 } opx_distance_result;
 
 #define OPX_DISTANCE_RESULT_INIT {sizeof(opx_distance_result), 0, 0, 0, 0, 0, 0.0, \
-    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0, 0.0, 0, -1, 0}
+    {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0, 0.0, 0, -1, 0, -1, 0}
 OPX_API opx_status opx_distance_result_init(opx_distance_result *result, size_t size);
 
 /**

@@ -9,7 +9,10 @@
  * joint are NOT skipped implicitly (MoveIt's SRDFs list them as "Adjacent");
  * opx_linkset_disable_never_colliding_pairs disables, by sampling, the
  * pairs that never collide, as MoveIt's setup assistant does.  The shapes
- * of one link never collide with each other.
+ * of one link never collide with each other.  Objects attached to links
+ * (linkset.h) are checked with every enabled link but their own and their
+ * touch links, whatever the link pairs say, and with the objects attached
+ * to other links; contacts name them (attached_a, attached_b).
  *
  * Geometry: as against the map, shapes are padded (the link's padding plus
  * the set's global padding, on both sides of a pair), touching counts
@@ -83,10 +86,15 @@ typedef struct opx_self_contact {
     double depth;
     double normal[3];
     double position[3];
+    /** The objects attached to link_a and link_b (linkset.h: their indices)
+     * whose shapes touch, shape_a or shape_b then being the shape's index
+     * within that object; -1: one of the link's own shapes. */
+    int32_t attached_a;
+    int32_t attached_b;
 } opx_self_contact;
 
 #define OPX_SELF_CONTACT_INIT {sizeof(opx_self_contact), 0, 0, 0, 0, 0, 0.0, {0.0, 0.0, 0.0}, \
-    {0.0, 0.0, 0.0}}
+    {0.0, 0.0, 0.0}, -1, -1}
 OPX_API opx_status opx_self_contact_init(opx_self_contact *contact, size_t size);
 
 /**
@@ -132,10 +140,14 @@ typedef struct opx_self_distance_result {
     double point_on_b[3];    /**< witness on link_b's; the two are |distance| apart */
     uint64_t link_pairs;     /**< pairs of links measured beyond their bounding boxes */
     uint64_t narrow_tests;   /**< exact distances between convex pieces */
+    /** The objects attached to link_a and link_b (linkset.h) whose shapes
+     * are the nearest pair, as in opx_self_contact; -1: the link's own. */
+    int32_t attached_a;
+    int32_t attached_b;
 } opx_self_distance_result;
 
 #define OPX_SELF_DISTANCE_RESULT_INIT {sizeof(opx_self_distance_result), 0, 0, 0, 0, 0, 0, 0, \
-    0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, 0}
+    0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0, 0, -1, -1}
 OPX_API opx_status opx_self_distance_result_init(opx_self_distance_result *result, size_t size);
 
 /**

@@ -86,6 +86,21 @@ OPX_API opx_status opx_world_get_shape_count(const opx_world *world, uint32_t ob
 OPX_API opx_status opx_world_get_shape(const opx_world *world, uint32_t object, uint32_t shape,
                                        opx_shape *out_shape);
 
+/**
+ * Attaches a copy of world object `object` (its name and shapes) to link
+ * `link` of `links` where it stands now: its pose in the link frame is
+ * the object's map pose seen from the link's current pose.  `touch_links`
+ * as in opx_linkset_attach_object.  The world does not change: remove or
+ * disable the object there (opx_world_remove_object,
+ * opx_world_set_object_enabled), as MoveIt moves an object it attaches out
+ * of its world, or the attached copy touches the original.  An object
+ * without shapes is an invalid argument.
+ */
+OPX_API opx_status opx_linkset_attach_world_object(opx_linkset *links, uint32_t link,
+                                                   const opx_world *world, uint32_t object,
+                                                   const char *const *touch_links,
+                                                   size_t touch_link_count, uint32_t *out_attached);
+
 /* ---- MoveIt planning scenes -------------------------------------------- */
 
 /**

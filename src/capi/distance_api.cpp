@@ -32,7 +32,7 @@ opx_distance_result distance_result_to_abi(const DistanceAnswer &answer, double 
     // The same touch rule as collision queries, so the two agree.
     out.collided = o.distance <= kTouchTolerance ? 1 : 0;
     out.cell_class = answer.cell.cell_class;
-    out.link = o.link, out.shape = o.shape;
+    out.link = o.link, out.shape = o.shape, out.attached = o.attached;
     for (int axis = 0; axis < 3; ++axis) {
         out.point_on_link[axis] = o.on_link[axis];
         out.point_on_cell[axis] = o.on_cell[axis];

@@ -88,7 +88,7 @@ opx_contact contact_to_abi(const Contact &c) {
     return opx_contact{sizeof(opx_contact), c.link, c.shape, c.cell_class,
                        {c.center[0], c.center[1], c.center[2]}, c.size, c.probability, c.depth,
                        {c.normal[0], c.normal[1], c.normal[2]}, {c.position[0], c.position[1], c.position[2]},
-                       -1, 0};
+                       -1, 0, c.attached, 0};
 }
 
 }  // namespace

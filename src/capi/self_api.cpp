@@ -47,6 +47,7 @@ opx_self_distance_result distance_result_to_abi(const SelfDistanceOutcome &o, do
     if (!o.found) return out;
     out.collided = o.distance <= kTouchTolerance ? 1 : 0;  // the touch rule of collision queries
     out.link_a = o.link_a, out.shape_a = o.shape_a, out.link_b = o.link_b, out.shape_b = o.shape_b;
+    out.attached_a = o.attached_a, out.attached_b = o.attached_b;
     for (int axis = 0; axis < 3; ++axis) out.point_on_a[axis] = o.on_a[axis], out.point_on_b[axis] = o.on_b[axis];
     return out;
 }
@@ -54,6 +55,7 @@ opx_self_distance_result distance_result_to_abi(const SelfDistanceOutcome &o, do
 opx_self_contact contact_to_abi(const SelfContact &c) {
     opx_self_contact out = OPX_SELF_CONTACT_INIT;
     out.link_a = c.link_a, out.shape_a = c.shape_a, out.link_b = c.link_b, out.shape_b = c.shape_b;
+    out.attached_a = c.attached_a, out.attached_b = c.attached_b;
     out.depth = c.depth;
     for (int axis = 0; axis < 3; ++axis) out.normal[axis] = c.normal[axis], out.position[axis] = c.position[axis];
     return out;

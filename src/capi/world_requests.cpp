@@ -49,7 +49,7 @@ DistanceSettings distance_settings_without_map(const opx_distance_request &r) {
 
 opx_contact world_contact_to_abi(const WorldContact &c) {
     opx_contact out = OPX_CONTACT_INIT;
-    out.link = c.link, out.shape = c.shape;
+    out.link = c.link, out.shape = c.shape, out.attached = c.attached;
     out.object = static_cast<int32_t>(c.object), out.object_shape = c.object_shape;
     out.depth = c.depth;
     for (int axis = 0; axis < 3; ++axis) {

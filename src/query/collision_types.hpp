@@ -24,6 +24,7 @@ struct CollisionSettings {
 
 struct Contact {
     uint32_t link = 0, shape = 0;
+    int32_t attached = -1;            // the shape's attached object (PlacedShape::attached)
     int cell_class = 0;
     double center[3] = {0, 0, 0};
     double size = 0.0;

@@ -6,7 +6,7 @@ namespace octoprox {
 
 void ContactSink::keep(const PlacedShape &shape, const Aabb &cell, const CellSummary &summary) {
     Contact c;
-    c.link = shape.link, c.shape = shape.shape;
+    c.link = shape.link, c.shape = shape.shape, c.attached = shape.attached;
     set_cell(c, summary);
     if (settings_.penetration) set_contact_penetration(shape, cell, c);
     contacts_.push_back(c);

@@ -37,7 +37,7 @@ void QueryContext::distance_world(const LinkSet &links, const DistanceSettings &
     if (!w.found || (o.found && !(w.distance < o.distance))) return;
     o.found = true;
     o.distance = w.distance, o.on_link = w.on_link, o.on_cell = w.on_object;
-    o.link = w.link, o.shape = w.shape;
+    o.link = w.link, o.shape = w.shape, o.attached = w.attached;
     answer.cell = CellSummary();
     answer.object = static_cast<int32_t>(w.object), answer.object_shape = w.object_shape;
 }

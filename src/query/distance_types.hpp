@@ -26,6 +26,7 @@ struct DistanceOutcome {
     Vec3 on_link = Vec3::Zero();  // witness on the padded shape, map frame
     Vec3 on_cell = Vec3::Zero();  // witness on the cell, map frame
     uint32_t link = 0, shape = 0;
+    int32_t attached = -1;  // the shape's attached object (PlacedShape::attached)
     CellKey cell;
     bool cell_unknown = false;
     float cell_log_odds = 0.0f;

@@ -26,7 +26,7 @@ bool keep_if_nearer(const PlacedShape &shape, const ShapeCellDistance &pair, Dis
     best.distance = pair.distance;
     best.on_link = pair.on_shape;
     best.on_cell = pair.on_cell;
-    best.link = shape.link, best.shape = shape.shape;
+    best.link = shape.link, best.shape = shape.shape, best.attached = shape.attached;
     return true;
 }
 

@@ -17,6 +17,14 @@ LinkSet::LinkSet(const LinkSet &other)
         for (const auto &def : l.shapes) copy.shapes.push_back(std::make_unique<ShapeDef>(*def));
         links_.push_back(std::move(copy));
     }
+    for (const AttachedObject &a : other.attached_) {
+        AttachedObject copy;
+        copy.name = a.name, copy.link = a.link, copy.pose = a.pose, copy.shape_poses = a.shape_poses;
+        copy.touch_links = a.touch_links;
+        for (const auto &def : a.shapes) copy.shapes.push_back(std::make_unique<ShapeDef>(*def));
+        attached_.push_back(std::move(copy));
+    }
+    index_attached();
     rebuild();
 }
 
@@ -27,12 +35,14 @@ uint32_t LinkSet::add_link(const std::string &name) {
     link.name = name;
     links_.push_back(std::move(link));
     pairs_.resize(links_.size());
+    attached_by_link_.emplace_back();
     first_placed_.push_back(static_cast<uint32_t>(placed_.size()));
     mark_topology_stale();
     return static_cast<uint32_t>(links_.size() - 1);
 }
 
-// Places only the new shape, after the link's others in placed_.
+// Places only the new shape, after the link's others in placed_ (and
+// before its attached objects' shapes, which keep their fields).
 uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
     ++generation_;
     if (def.kind == ShapeKind::kMesh) build_mesh_tree(def);
@@ -99,21 +109,39 @@ bool LinkSet::same_pose(const Pose &a, const Pose &b) {
     return a.rotation == b.rotation && a.translation == b.translation;
 }
 
+// The link's own shapes, then its attached objects' (each shape's `local`
+// is already in the link frame), with the link's padding and flag.
 void LinkSet::place_link(uint32_t index) {
     const Link &l = links_[index];
-    for (uint32_t s = 0; s < l.shapes.size(); ++s) {
-        PlacedShape &placed = placed_[first_placed_[index] + s];
-        placed.link = index, placed.shape = s;
-        place_shape(*l.shapes[s], l.pose, padding_ + l.padding, l.enabled, placed);
+    const double padding = padding_ + l.padding;
+    uint32_t at = first_placed_[index];
+    for (uint32_t s = 0; s < l.shapes.size(); ++s, ++at) {
+        PlacedShape &placed = placed_[at];
+        placed.link = index, placed.shape = s, placed.attached = -1;
+        place_shape(*l.shapes[s], l.pose, padding, l.enabled, placed);
     }
+    for (uint32_t object : attached_by_link_[index]) {
+        const AttachedObject &a = attached_[object];
+        for (uint32_t s = 0; s < a.shapes.size(); ++s, ++at) {
+            PlacedShape &placed = placed_[at];
+            placed.link = index, placed.shape = s, placed.attached = static_cast<int32_t>(object);
+            place_shape(*a.shapes[s], l.pose, padding, l.enabled, placed);
+        }
+    }
+}
+
+size_t LinkSet::placed_count(uint32_t link) const {
+    size_t count = links_[link].shapes.size();
+    for (uint32_t object : attached_by_link_[link]) count += attached_[object].shapes.size();
+    return count;
 }
 
 void LinkSet::rebuild() {
     first_placed_.clear();
     size_t total = 0;
-    for (const Link &l : links_) {
+    for (uint32_t link = 0; link < links_.size(); ++link) {
         first_placed_.push_back(static_cast<uint32_t>(total));
-        total += l.shapes.size();
+        total += placed_count(link);
     }
     placed_.assign(total, PlacedShape());
     for (uint32_t i = 0; i < links_.size(); ++i) place_link(i);

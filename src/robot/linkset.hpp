@@ -1,6 +1,6 @@
 // A robot as links with shapes, paddings, enabled flags and map-frame
-// poses, the link pairs self-collision checks, and the BVH over all placed
-// shapes that queries traverse.  Every
+// poses, objects attached to its links, the link pairs self-collision
+// checks, and the BVH over all placed shapes that queries traverse.  Every
 // change brings the shapes' boxes up to date at once; a change of the set
 // of shapes (or of which are enabled) only marks the BVH's topology stale,
 // and the first reader of tree() rebuilds it (thread-safe), so adding n
@@ -20,6 +20,23 @@
 #include <vector>
 
 namespace octoprox {
+
+// An object attached to a link (MoveIt's attached collision object): its
+// shapes move with the link and are checked as the link's own against the
+// map and the world; against the robot they follow their own rules
+// (self-collision skips the link they are attached to and the touch
+// links).  A shape's `local` is its pose in the LINK frame (the object's
+// pose in the link times the shape's pose in the object).
+struct AttachedObject {
+    std::string name;
+    uint32_t link = 0;
+    Pose pose;                       // the object's frame in the link frame
+    std::vector<Pose> shape_poses;   // each shape's pose in the object frame
+    std::vector<std::unique_ptr<ShapeDef>> shapes;
+    std::vector<uint32_t> touch_links;  // sorted, unique; never `link` itself
+
+    bool touches(uint32_t other) const;  // `other` is a touch link
+};
 
 struct Link {
     std::string name;
@@ -47,6 +64,25 @@ public:
     void set_pair_enabled(uint32_t a, uint32_t b, bool enabled);
     const LinkPairs &pairs() const { return pairs_; }
 
+    // Attached objects (linkset_attached.cpp); indices are positions, as
+    // links': detaching moves every later object down by one.  Callers
+    // check the link, touch links and shapes; `shapes` are in the object
+    // frame (their `local` the pose in the object), `pose` the object in
+    // the link frame.
+    uint32_t attach(const std::string &name, uint32_t link, const Pose &pose, std::vector<ShapeDef> shapes,
+                    std::vector<uint32_t> touch_links);
+    void detach(uint32_t object);
+    size_t attached_count() const { return attached_.size(); }
+    const AttachedObject &attached(uint32_t index) const { return attached_[index]; }
+    // The first attached object named `name`, or -1.
+    int64_t find_attached(const std::string &name) const;
+    // Self-collision's rule for an attached object and a link: not its own
+    // link, not a touch link.
+    bool attached_meets_link(uint32_t object, uint32_t link) const {
+        const AttachedObject &a = attached_[object];
+        return a.link != link && !a.touches(link);
+    }
+
     size_t link_count() const { return links_.size(); }
     const Link &link(uint32_t index) const { return links_[index]; }
     double padding() const { return padding_; }
@@ -66,6 +102,8 @@ public:
 
 private:
     void place_link(uint32_t link);
+    void index_attached();  // attached_by_link_ from attached_
+    size_t placed_count(uint32_t link) const;  // own and attached shapes
     static bool same_pose(const Pose &a, const Pose &b);
     void rebuild();  // place every shape, topology stale
     void mark_topology_stale();
@@ -75,6 +113,10 @@ private:
     void refit() const;  // after boxes changed
 
     std::vector<Link> links_;
+    std::vector<AttachedObject> attached_;
+    // Per link, its attached objects in index order; their shapes follow
+    // the link's own in placed_.
+    std::vector<std::vector<uint32_t>> attached_by_link_;
     LinkPairs pairs_;
     double padding_ = 0.0;
     std::vector<PlacedShape> placed_;

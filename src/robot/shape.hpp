@@ -77,6 +77,10 @@ struct PlacedShapeFields {
     mutable LazyPlacement mesh_placement;
     mutable Aabb mesh_vertex_box;                      // mesh: of the placed vertices, by place_mesh()
     const ShapeDef *def = nullptr;
+    // A shape of an object attached to the link (LinkSet::attach): the
+    // object's index, `shape` being the shape's index within the object;
+    // -1: one of the link's own shapes.
+    int32_t attached = -1;
 };
 
 // A convex hull's core points into the shape's own world_vertices, so a

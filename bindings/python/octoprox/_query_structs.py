@@ -65,11 +65,14 @@ class Contact(Struct):
     unknown cells); with compute_penetration depth (m, >= 0), normal
     (moving the link by -depth * normal separates it) and position (map
     frame); object and object_shape: the world object touched (its
-    index; its cell fields are then zeros), object -1 for a cell."""
+    index; its cell fields are then zeros), object -1 for a cell;
+    attached: the object attached to the link whose shape touched (its
+    index, shape then its shape's index), -1 for the link's own."""
     _fields_ = [("struct_size", c_uint32), ("link", c_uint32), ("shape", c_uint32),
                 ("cell_class", c_int32), ("cell_center", D3), ("cell_size", c_double),
                 ("cell_probability", c_double), ("depth", c_double), ("normal", D3),
-                ("position", D3), ("object", c_int32), ("object_shape", c_uint32)]
+                ("position", D3), ("object", c_int32), ("object_shape", c_uint32),
+                ("attached", c_int32), ("reserved1", c_uint32)]
 
 
 class CostBox(Struct):
@@ -105,12 +108,14 @@ class DistanceResult(Struct):
     point_on_link and point_on_cell (witnesses, map frame), cell_center,
     cell_size, cell_probability, narrow_tests; object and object_shape:
     the nearest world object (point_on_cell lies on it), object -1 for a
-    cell."""
+    cell; attached: the object attached to the link whose shape is the
+    nearest (shape then its index in that object), -1 for the link's own."""
     _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
                 ("cell_class", c_int32), ("link", c_uint32), ("shape", c_uint32),
                 ("distance", c_double), ("point_on_link", D3), ("point_on_cell", D3),
                 ("cell_center", D3), ("cell_size", c_double), ("cell_probability", c_double),
-                ("narrow_tests", c_uint64), ("object", c_int32), ("object_shape", c_uint32)]
+                ("narrow_tests", c_uint64), ("object", c_int32), ("object_shape", c_uint32),
+                ("attached", c_int32), ("reserved0", c_uint32)]
 
 
 class SelfCollisionRequest(Struct):
@@ -134,10 +139,13 @@ class SelfContact(Struct):
     """Two touching shapes of two links (a row of Query.self_contacts()):
     link_a < link_b, shape_a, shape_b; with compute_penetration depth (m),
     normal (moving link_a by -depth * normal separates the pair) and
-    position (map frame)."""
+    position (map frame); attached_a and attached_b: the objects attached
+    to the links whose shapes touch (shape_a or shape_b then the shape's
+    index in that object), -1 for a link's own."""
     _fields_ = [("struct_size", c_uint32), ("link_a", c_uint32), ("shape_a", c_uint32),
                 ("link_b", c_uint32), ("shape_b", c_uint32), ("reserved0", c_uint32),
-                ("depth", c_double), ("normal", D3), ("position", D3)]
+                ("depth", c_double), ("normal", D3), ("position", D3),
+                ("attached_a", c_int32), ("attached_b", c_int32)]
 
 
 class SphereRequest(Struct):
@@ -159,12 +167,13 @@ class SelfDistanceResult(Struct):
     """The answer of Query.self_distance: found, collided (distance <=
     1e-9 m), link_a < link_b and their shapes, distance (m, paddings
     included), point_on_a and point_on_b (witnesses, map frame),
-    link_pairs, narrow_tests."""
+    link_pairs, narrow_tests; attached_a and attached_b as in
+    SelfContact."""
     _fields_ = [("struct_size", c_uint32), ("found", c_int32), ("collided", c_int32),
                 ("link_a", c_uint32), ("shape_a", c_uint32), ("link_b", c_uint32),
                 ("shape_b", c_uint32), ("reserved0", c_uint32), ("distance", c_double),
                 ("point_on_a", D3), ("point_on_b", D3), ("link_pairs", c_uint64),
-                ("narrow_tests", c_uint64)]
+                ("narrow_tests", c_uint64), ("attached_a", c_int32), ("attached_b", c_int32)]
 
 
 class PathRequest(Struct):

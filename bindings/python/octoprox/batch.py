@@ -11,7 +11,9 @@ JointOrder.BY_COUNT, the default; JointOrder.ACTIVE or MODEL insists on
 one); radians or metres.  Forward kinematics runs on the query's own
 copies: the robot does not move.  A configuration collides as
 Query.collide would say after set_joint_positions (and, with
-self_collision, as self_collide), whatever the thread count.  Arrays go in
+self_collision, as self_collide), whatever the thread count.  With
+world=, a World's enabled objects are checked beside the octree (which may
+then be None), as Query.collide checks them.  Arrays go in
 by address and row stride when they are float64 with packed rows, else as
 one copy.  The library runs without the GIL (ctypes releases it), so other
 Python threads go on while a batch is checked.
@@ -35,6 +37,7 @@ from ._types import (ArrayLike, JointOrderLike, ObstacleGeometryLike, PoseLike, 
                      Vector3)
 from .linkset import LinkSet
 from .octree import Octree
+from .world import World, call_with_world
 
 JOINTS_BY_COUNT, JOINTS_MODEL, JOINTS_ACTIVE = JointOrder
 _ZERO3 = (0.0, 0.0, 0.0)
@@ -85,10 +88,11 @@ class _BasePoses:
         self.stride = arr.strides[0] if len(arr) > 1 else 0
 
 
-def _check_operands(tree, robot, where):
-    if not isinstance(tree, Octree) or not isinstance(robot, LinkSet):
-        raise TypeError(f"{where}: expected an Octree and a LinkSet, got "
-                        f"{type(tree).__name__} and {type(robot).__name__}")
+def _check_operands(tree, robot, where, world=None):
+    bad_tree = tree is None if world is None else tree is not None and not isinstance(tree, Octree)
+    if bad_tree or not isinstance(robot, LinkSet):
+        raise TypeError(f"{where}: expected an Octree and a LinkSet (the octree may be None "
+                        f"with a world), got {type(tree).__name__} and {type(robot).__name__}")
 
 
 class BatchQueries:
@@ -137,13 +141,14 @@ class BatchQueries:
         return collided
 
     @api("Query.check_configurations")
-    def check_configurations(self, tree: Octree, robot: LinkSet, q: ArrayLike, threads: int = 1,
-                             self_collision: bool = False, base_pose: Optional[PoseLike] = None,
-                             distance: bool = False, *,
+    def check_configurations(self, tree: Optional[Octree], robot: LinkSet, q: ArrayLike,
+                             threads: int = 1, self_collision: bool = False,
+                             base_pose: Optional[PoseLike] = None, distance: bool = False, *,
                              unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                              occupancy_threshold: float = 0.0, distance_cutoff: float = 0.0,
                              obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
-                             joint_order: JointOrderLike = JointOrder.BY_COUNT
+                             joint_order: JointOrderLike = JointOrder.BY_COUNT,
+                             world: Optional[World] = None
                              ) -> Union[np.ndarray, Tuple[np.ndarray, np.ndarray]]:
         """Checks many joint vectors of a robot made from URDF at once.
 
@@ -163,6 +168,9 @@ class BatchQueries:
           searched, the distance is then the cutoff (0: none).
         unknown_policy, occupancy_threshold, obstacle_geometry: as
           Query.collide.
+        world: a World whose enabled objects are checked too (tree may then
+          be None): collided when a link touches a cell or an object, the
+          distance the least of both.
 
         Returns a numpy bool array of N collided flags; with distance=True
         a tuple (collided, distances).  Raises InvalidArgumentError naming
@@ -170,7 +178,7 @@ class BatchQueries:
         UnsupportedError for a robot not made from URDF, TypeError for
         swapped operands.
         """
-        _check_operands(tree, robot, "Query.check_configurations")
+        _check_operands(tree, robot, "Query.check_configurations", world)
         rows = joint_rows(q, "Query.check_configurations")
         n = len(rows)
         collided = np.zeros(n, dtype=np.bool_)
@@ -180,22 +188,25 @@ class BatchQueries:
             request = self._configuration_requests.lookup(
                 (threads, self_collision, distance, unknown_policy, occupancy_threshold,
                  distance_cutoff, obstacle_geometry, joint_order))
-            lib.opx_query_check_configurations(
-                self, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows),
-                bases.address, bases.count, bases.stride, request, collided.ctypes.data,
-                None if distances is None else distances.ctypes.data, n)
+            call_with_world(self, world, "Query.check_configurations",
+                            lambda: lib.opx_query_check_configurations(
+                                self, tree, robot, rows.ctypes.data, n, rows.shape[1],
+                                _row_stride(rows), bases.address, bases.count, bases.stride,
+                                request, collided.ctypes.data,
+                                None if distances is None else distances.ctypes.data, n))
         return (collided, distances) if distance else collided
 
     @api("Query.check_motion")
-    def check_motion(self, tree: Octree, robot: LinkSet, start: ArrayLike, goal: ArrayLike,
-                     resolution: float = 0.01, self_collision: bool = False,
+    def check_motion(self, tree: Optional[Octree], robot: LinkSet, start: ArrayLike,
+                     goal: ArrayLike, resolution: float = 0.01, self_collision: bool = False,
                      base_pose: Optional[PoseLike] = None, *,
                      unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                      occupancy_threshold: float = 0.0, compute_cost: bool = False,
                      max_cost_boxes: int = 16, unknown_probability: float = 0.5,
                      region_min: Vector3 = _ZERO3, region_max: Vector3 = _ZERO3,
                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
-                     joint_order: JointOrderLike = JointOrder.BY_COUNT
+                     joint_order: JointOrderLike = JointOrder.BY_COUNT,
+                     world: Optional[World] = None
                      ) -> MotionResult:
         """Checks the straight joint-space motion from start to goal (joint
         vectors of the active joints or of every joint in model order, as
@@ -208,7 +219,10 @@ class BatchQueries:
         compute_cost: also the cost of the uncertain and unknown space the
           motion sweeps, every configuration checked (cost_boxes() gives
           the boxes; max_cost_boxes, unknown_probability, region_min,
-          region_max as Query.collide).
+          region_max as Query.collide); world objects add none, and it
+          needs an octree.
+        world: a World whose enabled objects are checked too, as
+          check_configurations checks them (tree may then be None).
         Other keywords as Query.collide.
 
         Returns a MotionResult: collided (bool), first_collision_fraction
@@ -216,7 +230,7 @@ class BatchQueries:
         configurations_checked, total_cost.  Raises InvalidArgumentError
         for a bad resolution or joint vectors of different lengths.
         """
-        _check_operands(tree, robot, "Query.check_motion")
+        _check_operands(tree, robot, "Query.check_motion", world)
         a = np.ascontiguousarray(start, dtype=np.float64).reshape(-1)
         b = np.ascontiguousarray(goal, dtype=np.float64).reshape(-1)
         if len(a) != len(b):
@@ -229,31 +243,34 @@ class BatchQueries:
         base = None if base_pose is None else ctypes.byref(make_pose(base_pose))
         if compute_cost:
             self._map_result = None  # the call replaces the query's results
-        lib.opx_query_check_motion(self, tree, robot, a.ctypes.data, b.ctypes.data, len(a), base,
-                                   request, out)
+        call_with_world(self, world, "Query.check_motion",
+                        lambda: lib.opx_query_check_motion(self, tree, robot, a.ctypes.data,
+                                                           b.ctypes.data, len(a), base, request,
+                                                           out))
         if compute_cost:
             self._map_result = out
         return out
 
     @api("Query.check_motions")
-    def check_motions(self, tree: Octree, robot: LinkSet, starts: ArrayLike, goals: ArrayLike,
-                      resolution: float = 0.01, threads: int = 1, self_collision: bool = False,
-                      base_pose: Optional[PoseLike] = None, *,
+    def check_motions(self, tree: Optional[Octree], robot: LinkSet, starts: ArrayLike,
+                      goals: ArrayLike, resolution: float = 0.01, threads: int = 1,
+                      self_collision: bool = False, base_pose: Optional[PoseLike] = None, *,
                       unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
                       occupancy_threshold: float = 0.0,
                       obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
-                      joint_order: JointOrderLike = JointOrder.BY_COUNT
+                      joint_order: JointOrderLike = JointOrder.BY_COUNT,
+                      world: Optional[World] = None
                       ) -> Tuple[np.ndarray, np.ndarray]:
         """Checks many motions (a planner's edges): row m of starts to row m
         of goals, (M, dof) arrays of active joints or of every joint, as
         check_motion does (no cost here).  threads, base_pose (one, or one
-        per row) and joint_order as check_configurations; other keywords
-        as check_motion.
+        per row), joint_order and world as check_configurations; other
+        keywords as check_motion.
 
         Returns (collided, first_fractions): a bool array and each
         motion's first colliding fraction (-1: none).
         """
-        _check_operands(tree, robot, "Query.check_motions")
+        _check_operands(tree, robot, "Query.check_motions", world)
         a = joint_rows(starts, "Query.check_motions")
         b = joint_rows(goals, "Query.check_motions")
         if a.shape != b.shape:
@@ -268,8 +285,9 @@ class BatchQueries:
             request = self._motions_requests.lookup(
                 (resolution, threads, self_collision, unknown_policy, occupancy_threshold,
                  obstacle_geometry, joint_order))
-            lib.opx_query_check_motions(self, tree, robot, a.ctypes.data, b.ctypes.data, n,
-                                        a.shape[1], _row_stride(a), bases.address, bases.count,
-                                        bases.stride, request, collided.ctypes.data,
-                                        fractions.ctypes.data, n)
+            call_with_world(self, world, "Query.check_motions",
+                            lambda: lib.opx_query_check_motions(
+                                self, tree, robot, a.ctypes.data, b.ctypes.data, n, a.shape[1],
+                                _row_stride(a), bases.address, bases.count, bases.stride, request,
+                                collided.ctypes.data, fractions.ctypes.data, n))
         return collided, fractions

@@ -8,12 +8,17 @@ solid convex hull of vertices; a triangle mesh (a surface: a cell wholly
 inside a closed mesh touches no triangle).  Padding is a safety margin: a
 padded shape is the shape grown by a ball of that radius (exact rounding).
 The library copies vertices, indices and names.
+
+Objects attached to links (attach_object, attach_box..., MoveIt's attached
+collision objects) move with their link and are checked as its shapes
+against the octree and world objects; against the robot they skip their
+own link and the touch links named when attaching.
 """
 from __future__ import annotations
 
 import ctypes
 from types import SimpleNamespace
-from typing import List, Optional, Union
+from typing import Any, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -31,6 +36,42 @@ LinkRef = Union[int, str]  # a link's index, or its name where the docstring say
 
 def _name(text):
     return text.encode() if isinstance(text, str) else bytes(text)
+
+
+def _field(spec, name, default):
+    return spec.get(name, default) if isinstance(spec, Mapping) else getattr(spec, name, default)
+
+
+def _shape_struct(spec, where, keep):
+    """An opx_shape of a shape description (a mapping or an object with
+    kind, pose, radius, length, size, vertices, triangles, as
+    LinkSet.shape gives them); arrays it points to are appended to keep."""
+    fields = dict(kind=ShapeKind.parse(_field(spec, "kind", None), where, "kind"),
+                  radius=_field(spec, "radius", 0.0), length=_field(spec, "length", 0.0),
+                  size=tuple(_field(spec, "size", (0.0, 0.0, 0.0))))
+    vertices, triangles = _field(spec, "vertices", None), _field(spec, "triangles", None)
+    if vertices is not None and len(vertices):
+        v = vertex_array(vertices, where)
+        keep.append(v)
+        fields.update(vertices=v.ctypes.data, vertex_count=len(v),
+                      vertex_stride=v.strides[0] if len(v) > 1 else 0)
+    if triangles is not None and len(triangles):
+        t = triangle_array(triangles, where)
+        keep.append(t)
+        fields.update(indices=t.ctypes.data, triangle_count=len(t))
+    shape = init_struct(s.Shape, **fields)
+    pose = _field(spec, "pose", None)
+    if pose is not None:
+        shape.pose = make_pose(pose)
+    return shape
+
+
+def touch_link_names(names, where):
+    """The touch links as the C call takes them: a char* array and its length."""
+    if isinstance(names, (str, bytes)):
+        raise TypeError(f"{where}: touch_links must be a sequence of link names, not one string")
+    encoded = [_name(n) for n in names]
+    return (ctypes.c_char_p * max(1, len(encoded)))(*encoded), len(encoded)
 
 
 def _array(address, ctype, shape, empty_dtype):
@@ -246,3 +287,144 @@ class LinkSet(Handle, RobotModel):
         count = ctypes.c_size_t()
         lib.opx_linkset_get_poses(self, out.ctypes.data, len(out), ctypes.byref(count))
         return out[:count.value]
+
+    # ---- attached objects ---------------------------------------------------
+
+    @api("LinkSet.attach_object")
+    def attach_object(self, link: LinkRef, name: str, shapes: Sequence[Any],
+                      pose: Optional[PoseLike] = None, *, touch_links: Sequence[str] = ()) -> int:
+        """Attaches an object to a link (MoveIt's attached collision object:
+        a part the gripper holds): it moves with the link, is checked as the
+        link's own shapes against the octree and world objects, and against
+        the robot with every link but its own and touch_links (names of
+        links it may touch, e.g. the fingers).
+
+        link: the link's index or name.  shapes: one or more descriptions,
+          mappings or objects with kind (ShapeKind), pose (in the OBJECT
+          frame), radius, length, size, vertices, triangles (as shape()
+          and attached_shape() give them; absent fields 0 or none).
+        pose: the object frame in the link frame (default identity).
+        Returns the object's index (detaching moves later ones down by
+        one).  Raises InvalidArgumentError for a bad link, shape or pose or
+        an unknown touch link name (nothing changes then).
+        """
+        keep: list = []
+        structs = [_shape_struct(spec, "LinkSet.attach_object", keep) for spec in shapes]
+        array = (s.Shape * max(1, len(structs)))(*structs)
+        names, count = touch_link_names(touch_links, "LinkSet.attach_object")
+        index = ctypes.c_uint32()
+        lib.opx_linkset_attach_object(self, self._link_index(link), _name(name), array,
+                                      len(structs), None if pose is None else make_pose(pose),
+                                      names, count, ctypes.byref(index))
+        return index.value
+
+    @api("LinkSet.attach_box")
+    def attach_box(self, link: LinkRef, name: str, size: Vector3, pose: Optional[PoseLike] = None,
+                   *, touch_links: Sequence[str] = ()) -> int:
+        """Attaches an object of one box of FULL edge lengths size = (x, y,
+        z) centred at pose (in the link frame); as attach_object."""
+        return self.attach_object(link, name, [dict(kind=ShapeKind.BOX, size=size)], pose,
+                                  touch_links=touch_links)
+
+    @api("LinkSet.attach_sphere")
+    def attach_sphere(self, link: LinkRef, name: str, radius: float,
+                      pose: Optional[PoseLike] = None, *, touch_links: Sequence[str] = ()) -> int:
+        """Attaches an object of one sphere of radius centred at pose (in
+        the link frame); as attach_object."""
+        return self.attach_object(link, name, [dict(kind=ShapeKind.SPHERE, radius=radius)], pose,
+                                  touch_links=touch_links)
+
+    @api("LinkSet.attach_cylinder")
+    def attach_cylinder(self, link: LinkRef, name: str, radius: float, length: float,
+                        pose: Optional[PoseLike] = None, *,
+                        touch_links: Sequence[str] = ()) -> int:
+        """Attaches an object of one cylinder of radius and FULL length
+        along its z axis, centred at pose (in the link frame); as
+        attach_object."""
+        return self.attach_object(link, name,
+                                  [dict(kind=ShapeKind.CYLINDER, radius=radius, length=length)],
+                                  pose, touch_links=touch_links)
+
+    def _attached_index(self, obj):
+        return self.find_attached(obj) if isinstance(obj, str) else obj
+
+    @api("LinkSet.detach")
+    def detach(self, obj: Union[int, str]) -> None:
+        """Detaches (removes) an attached object (index or name); later
+        ones move down by one."""
+        lib.opx_linkset_detach_object(self, self._attached_index(obj))
+
+    @property
+    @api("LinkSet.attached_count")
+    def attached_count(self) -> int:
+        """The number of attached objects."""
+        count = ctypes.c_uint32()
+        lib.opx_linkset_get_attached_count(self, ctypes.byref(count))
+        return count.value
+
+    @api("LinkSet.find_attached")
+    def find_attached(self, name: str) -> int:
+        """The index of the first attached object named name
+        (InvalidArgumentError if none)."""
+        index = ctypes.c_uint32()
+        lib.opx_linkset_find_attached(self, _name(name), ctypes.byref(index))
+        return index.value
+
+    @api("LinkSet.attached_name")
+    def attached_name(self, obj: int) -> str:
+        """The name of attached object obj."""
+        out = ctypes.c_char_p()
+        lib.opx_linkset_get_attached_name(self, obj, ctypes.byref(out))
+        return out.value.decode("utf-8", "replace")
+
+    @property
+    @api("LinkSet.attached_names")
+    def attached_names(self) -> List[str]:
+        """Every attached object's name, in index order."""
+        return [self.attached_name(i) for i in range(self.attached_count)]
+
+    @api("LinkSet.attached_link")
+    def attached_link(self, obj: Union[int, str]) -> int:
+        """The index of the link an attached object hangs on."""
+        out = ctypes.c_uint32()
+        lib.opx_linkset_get_attached_link(self, self._attached_index(obj), ctypes.byref(out))
+        return out.value
+
+    @api("LinkSet.attached_pose")
+    def attached_pose(self, obj: Union[int, str]) -> tuple:
+        """An attached object's frame in its link's frame, (x, y, z, qx,
+        qy, qz, qw)."""
+        out = s.Pose()
+        lib.opx_linkset_get_attached_pose(self, self._attached_index(obj), ctypes.byref(out))
+        return tuple(out.position) + tuple(out.orientation)
+
+    @api("LinkSet.attached_shape_count")
+    def attached_shape_count(self, obj: Union[int, str]) -> int:
+        """The number of shapes of an attached object."""
+        count = ctypes.c_uint32()
+        lib.opx_linkset_get_attached_shape_count(self, self._attached_index(obj),
+                                                 ctypes.byref(count))
+        return count.value
+
+    @api("LinkSet.attached_shape")
+    def attached_shape(self, obj: Union[int, str], shape: int) -> SimpleNamespace:
+        """A shape of an attached object as shape() gives a link's (pose in
+        the OBJECT frame)."""
+        out = init_struct(s.Shape)
+        lib.opx_linkset_get_attached_shape(self, self._attached_index(obj), shape, out)
+        vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
+        triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
+        return SimpleNamespace(kind=ShapeKind(out.kind), pose=tuple(out.pose.position) +
+                               tuple(out.pose.orientation), radius=out.radius,
+                               length=out.length, size=tuple(out.size), vertices=vertices,
+                               triangles=triangles)
+
+    @api("LinkSet.attached_touch_links")
+    def attached_touch_links(self, obj: Union[int, str]) -> List[int]:
+        """The indices of an attached object's touch links, ascending (its
+        own link is never among them: it may always touch it)."""
+        index = self._attached_index(obj)
+        count = ctypes.c_size_t()
+        out = (ctypes.c_uint32 * max(1, self.link_count))()
+        lib.opx_linkset_get_attached_touch_links(self, index, out, len(out), ctypes.byref(count))
+        return list(out[:count.value])

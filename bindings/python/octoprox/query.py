@@ -27,7 +27,7 @@ from .batch import BatchQueries, _check_operands
 from .linkset import LinkSet
 from .octree import Octree
 from .self_collision import SelfCollisionQueries
-from .world import World, query_with_world
+from .world import World, call_with_world, query_with_world
 
 ENGINE_DIRECT, ENGINE_AMORTIZED = Engine.DIRECT, Engine.AMORTIZED
 UNKNOWN_FREE, UNKNOWN_OCCUPIED = UnknownPolicy.FREE, UnknownPolicy.OCCUPIED
@@ -165,7 +165,9 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         """The contacts of the last collide() or collide_boxes(), a
         structured array with the fields of Contact: link, shape,
         cell_class, cell_center (map frame), cell_size, cell_probability,
-        and with compute_penetration depth, normal, position.  Empty after
+        and with compute_penetration depth, normal, position; object and
+        object_shape (world objects, -1 for a cell), attached (the link's
+        attached object whose shape touched, -1 for its own).  Empty after
         a path query."""
         count = getattr(self._map_result, "contact_count", 0)
         return self._rows(lib.opx_query_get_contact, CONTACT_DTYPE, count)
@@ -241,14 +243,14 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         return read_array(lib.opx_query_get_link_distances, self)
 
     @api("Query.path")
-    def path(self, tree: Octree, links: LinkSet, poses: ArrayLike, *,
+    def path(self, tree: Optional[Octree], links: LinkSet, poses: ArrayLike, *,
              unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
              occupancy_threshold: float = 0.0, compute_distance: bool = False,
              compute_cost: bool = False, max_cost_boxes: int = 16,
              unknown_probability: float = 0.5, region_min: Vector3 = _ZERO3,
              region_max: Vector3 = _ZERO3,
-             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
-             ) -> PathResult:
+             obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+             world: Optional[World] = None) -> PathResult:
         """Checks a path of waypoints in order; the link set does not move.
 
         poses: shape (waypoints, links, 7), x y z qx qy qz qw of every link
@@ -256,7 +258,11 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
           array is read in place by its strides.
         compute_distance: the minimum distance along the path.
         compute_cost: the cost of the uncertain and unknown space swept,
-          each cell counted once (cost_boxes() gives the boxes).
+          each cell counted once (cost_boxes() gives the boxes); world
+          objects have none (they are known), and it needs an octree.
+        world: a World whose enabled objects are checked at every waypoint
+          too (tree may then be None): collided when a link touches a cell
+          or an object, the distance the least of both.
         Other keywords as collide().  Without distance or cost the check
         stops at the first colliding waypoint.
 
@@ -265,7 +271,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         cost_box_count.  Raises as collide(), and InvalidArgumentError for
         poses of the wrong shape.
         """
-        _check_operands(tree, links, "Query.path")
+        _check_operands(tree, links, "Query.path", world)
         arr = pose_array(poses, "Query.path", 3)
         if arr.shape[1] != links.link_count:
             raise invalid(f"poses have {arr.shape[1]} links per waypoint, the link set has "
@@ -275,8 +281,10 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         waypoint_stride, pose_stride = pose_strides(arr)
         out = init_struct(s.PathResult)
         self._map_result = None
-        lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0], pose_stride,
-                           waypoint_stride, self._path_requests.lookup(key), out)
+        request = self._path_requests.lookup(key)
+        call_with_world(self, world, "Query.path",
+                        lambda: lib.opx_query_path(self, tree, links, arr.ctypes.data, arr.shape[0],
+                                                   pose_stride, waypoint_stride, request, out))
         self._map_result = out
         return out
 

@@ -5,9 +5,11 @@ An object has a name, a pose in the map frame, an enabled flag and shapes
 of the link-set kinds (linkset.py: sizes in metres, a box's FULL edges, a
 cylinder's FULL length along z), each at a pose in the object frame.
 Objects have no padding (a link's padding is the margin); a mesh is a
-surface.  Poses are x y z qx qy qz qw.  Query.collide and Query.distance
-check a world's enabled objects with ``world=``; the octree may then be
-None.  Removing an object moves every later one down by one index.
+surface.  Poses are x y z qx qy qz qw.  Query.collide, Query.distance,
+Query.path, check_configurations, check_motion and check_motions check a
+world's enabled objects with ``world=``; the octree may then be None
+(objects have no cost: a path's or motion's cost comes from the octree).
+Removing an object moves every later one down by one index.
 
     world = octoprox.World.from_scene_file("kitchen.scene")
     world.add_box("crate", (0.4, 0.3, 0.3), pose=(1.0, 0.5, 0.15))
@@ -18,7 +20,7 @@ from __future__ import annotations
 import ctypes
 import os
 from types import SimpleNamespace
-from typing import Callable, List, Optional, Union
+from typing import Callable, List, Optional, Sequence, TypeVar, Union
 
 import numpy as np
 
@@ -29,10 +31,11 @@ from ._errors import invalid
 from ._handle import Handle, api, failure
 from ._library import init_struct, lib, make_pose
 from ._types import ArrayLike, PathLike, PoseLike, Vector3
-from .linkset import LinkSet, _array, _name
+from .linkset import LinkRef, LinkSet, _array, _name, touch_link_names
 from .octree import Octree
 
 ObjectRef = Union[int, str]  # an object's index or its name (the first so named)
+_T = TypeVar("_T")
 SCENE_FORMATS = {"yaml": 1, "scene": 2}  # OPX_SCENE_FORMAT_YAML, OPX_SCENE_FORMAT_TEXT
 
 
@@ -235,6 +238,23 @@ class World(Handle):
                                length=out.length, size=tuple(out.size), vertices=vertices,
                                triangles=triangles)
 
+    @api("World.attach_to")
+    def attach_to(self, obj: ObjectRef, links: LinkSet, link: LinkRef, *,
+                  touch_links: Sequence[str] = ()) -> int:
+        """Attaches a copy of object obj (its name and shapes) to a link
+        of links where it stands now (its map pose seen from the link's
+        current pose), as LinkSet.attach_object does; returns the attached
+        object's index.  This world does not change: remove or disable the
+        object here (as MoveIt moves an object it attaches out of its
+        world), or the copy touches the original."""
+        if not isinstance(links, LinkSet):
+            raise TypeError(f"World.attach_to: expected a LinkSet, got {type(links).__name__}")
+        names, count = touch_link_names(touch_links, "World.attach_to")
+        index = ctypes.c_uint32()
+        lib.opx_linkset_attach_world_object(links, links._link_index(link), self, self._index(obj),
+                                            names, count, ctypes.byref(index))
+        return index.value
+
 
 def query_with_world(query, tree: Optional[Octree], links: LinkSet, world: Optional[World],
                      where: str, call: Callable[[object], int]) -> None:
@@ -256,3 +276,19 @@ def query_with_world(query, tree: Optional[Octree], links: LinkSet, world: Optio
             lib.opx_query_set_world(query, None)
     if status:
         raise failure(status, where, query, tree, links, world)
+
+
+def call_with_world(query, world: Optional[World], where: str, call: Callable[[], _T]) -> _T:
+    """Returns ``call()`` (a library call raising its own errors) run with
+    ``world`` set on ``query`` and detached again after, so the query never
+    keeps a world Python may free; world None: ``call()`` as it is."""
+    if world is None:
+        return call()
+    if not isinstance(world, World):
+        raise TypeError(f"{where}: expected a World (or None) for world, "
+                        f"got {type(world).__name__}")
+    lib.opx_query_set_world(query, world)
+    try:
+        return call()
+    finally:
+        lib.opx_query_set_world(query, None)

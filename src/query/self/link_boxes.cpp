@@ -7,18 +7,22 @@
 
 namespace octoprox {
 
-void LinkBoxes::update(const LinkSet &links) {
+void LinkBoxes::update(const LinkSet &links, bool with_attached) {
     const std::vector<PlacedShape> &placed = links.placed();
-    ranges_.assign(links.link_count(), Range());
+    const uint32_t link_count = static_cast<uint32_t>(links.link_count());
+    ranges_.assign(link_count + links.attached_count(), Range());
     for (uint32_t i = 0; i < placed.size(); ++i) {
-        Range &r = ranges_[placed[i].link];
+        const int32_t attached = placed[i].attached;
+        Range &r = ranges_[attached < 0 ? placed[i].link : link_count + static_cast<uint32_t>(attached)];
         if (r.count++ == 0) r.first = i;
     }
     sorted_.clear();
-    for (uint32_t link = 0; link < links.link_count(); ++link) {
-        if (ranges_[link].count == 0 || !links.link(link).enabled) continue;
-        Entry e{Aabb(), link};
-        for (uint32_t k = 0; k < ranges_[link].count; ++k) e.box.grow(placed[ranges_[link].first + k].box);
+    const uint32_t bodies = with_attached ? static_cast<uint32_t>(ranges_.size()) : link_count;
+    for (uint32_t body = 0; body < bodies; ++body) {
+        const uint32_t link = body < link_count ? body : links.attached(body - link_count).link;
+        if (ranges_[body].count == 0 || !links.link(link).enabled) continue;
+        Entry e{Aabb(), body, link};
+        for (uint32_t k = 0; k < ranges_[body].count; ++k) e.box.grow(placed[ranges_[body].first + k].box);
         // Shapes within the touch tolerance collide: boxes that far apart
         // must still overlap (their faces may differ by a rounding).
         e.box.inflate(kTouchTolerance);
@@ -43,16 +47,15 @@ void LinkBoxes::choose_axis() {
     spread.maxCoeff(&axis_);
 }
 
-void LinkBoxes::nearer_than(const LinkPairs &filter, double cutoff, std::vector<Candidate> &out) const {
+void LinkBoxes::nearer_than(const BodyPairs &filter, double cutoff, std::vector<Candidate> &out) const {
     out.clear();
     for (size_t i = 0; i < sorted_.size(); ++i) {
         for (size_t j = i + 1; j < sorted_.size(); ++j) {
             const Entry &x = sorted_[i], &y = sorted_[j];
-            if (!filter.enabled(x.link, y.link)) continue;
+            if (!filter.enabled(x.body, y.body)) continue;
             const double lower = std::sqrt(x.box.squared_distance(y.box));
             if (lower >= cutoff) continue;
-            const LinkPair pair = x.link < y.link ? LinkPair{x.link, y.link} : LinkPair{y.link, x.link};
-            out.push_back({pair, lower});
+            out.push_back({ordered(x, y), lower});
         }
     }
     std::sort(out.begin(), out.end(), [](const Candidate &x, const Candidate &y) { return x.lower < y.lower; });

@@ -16,6 +16,7 @@ bool boxes_within_touch(const Aabb &a, const Aabb &b) {
 SelfContact contact_of(const PlacedShape &a, const PlacedShape &b, bool penetration, uint64_t &narrow_tests) {
     SelfContact c;
     c.link_a = a.link, c.shape_a = a.shape, c.link_b = b.link, c.shape_b = b.shape;
+    c.attached_a = a.attached, c.attached_b = b.attached;
     if (penetration) {
         const ShapePairPenetration p = shape_pair_penetration(a, b, narrow_tests);
         c.depth = p.depth, c.normal = p.normal, c.position = 0.5 * (p.on_a + p.on_b);
@@ -45,7 +46,8 @@ bool SelfCollider::links_touch(const LinkSet &links, const LinkPair &pair, uint6
 bool SelfCollider::collides(const LinkSet &links) {
     boxes_.update(links);
     uint64_t narrow_tests = 0;
-    return boxes_.overlapping(links.pairs(), [&](const LinkPair &pair) { return links_touch(links, pair, narrow_tests); });
+    return boxes_.overlapping(BodyPairs(links, links.pairs()),
+                              [&](const LinkPair &pair) { return links_touch(links, pair, narrow_tests); });
 }
 
 // The contact rules of collision against the map (ContactSink): with at
@@ -66,7 +68,7 @@ SelfCollisionOutcome SelfCollider::collide(const LinkSet &links, const SelfColli
         contacts.push_back(contact_of(a, b, settings.penetration, out.narrow_tests));
         return contacts.size() >= settings.max_contacts && settings.max_contacts <= 1;
     };
-    boxes_.overlapping(links.pairs(), [&](const LinkPair &pair) {
+    boxes_.overlapping(BodyPairs(links, links.pairs()), [&](const LinkPair &pair) {
         ++out.link_pairs;
         return shape_pairs(links, pair, keep);
     });
@@ -75,9 +77,9 @@ SelfCollisionOutcome SelfCollider::collide(const LinkSet &links, const SelfColli
 
 void SelfCollider::touching_pairs(const LinkSet &links, const LinkPairs &filter, std::vector<LinkPair> &out) {
     out.clear();
-    boxes_.update(links);
+    boxes_.update(links, false);
     uint64_t narrow_tests = 0;
-    boxes_.overlapping(filter, [&](const LinkPair &pair) {
+    boxes_.overlapping(BodyPairs(links, filter), [&](const LinkPair &pair) {
         if (links_touch(links, pair, narrow_tests)) out.push_back(pair);
         return false;
     });

@@ -1,7 +1,8 @@
 // Self-collision of one link set at its current poses: every pair of two
 // links that the set enables (LinkSet::pairs(): all but the SRDF's and the
-// caller's disabled pairs) whose padded shapes touch.  The link boxes
-// (link_boxes.hpp) give the candidate pairs, the shape boxes the shape
+// caller's disabled pairs) whose padded shapes touch, and the attached
+// objects by their own rules (BodyPairs: not their link, not their touch
+// links).  The body boxes (link_boxes.hpp) give the candidate pairs, the shape boxes the shape
 // pairs within them, the exact tests (narrowphase/shape_pair.hpp) the
 // answer.  One collider per thread: it keeps its scratch between calls,
 // and reads the link set only, so a batch may call it on its own posed

@@ -23,6 +23,7 @@ void SelfCollider::measure_pair(const LinkSet &links, const LinkPair &pair, Self
             best.found = true;
             best.distance = d.distance, best.on_a = d.on_a, best.on_b = d.on_b;
             best.link_a = a.link, best.shape_a = a.shape, best.link_b = b.link, best.shape_b = b.shape;
+            best.attached_a = a.attached, best.attached_b = b.attached;
             if (d.distance <= 0.0) return;
         }
     }
@@ -43,13 +44,14 @@ void SelfCollider::deepest_overlap(const LinkSet &links, SelfDistanceOutcome &be
     best.on_b = deepest->position - 0.5 * deepest->depth * deepest->normal;
     best.link_a = deepest->link_a, best.shape_a = deepest->shape_a;
     best.link_b = deepest->link_b, best.shape_b = deepest->shape_b;
+    best.attached_a = deepest->attached_a, best.attached_b = deepest->attached_b;
 }
 
 SelfDistanceOutcome SelfCollider::distance(const LinkSet &links, const SelfDistanceSettings &settings) {
     SelfDistanceOutcome best;
     best.distance = settings.cutoff;
     boxes_.update(links);
-    boxes_.nearer_than(links.pairs(), settings.cutoff, candidates_);
+    boxes_.nearer_than(BodyPairs(links, links.pairs()), settings.cutoff, candidates_);
     for (const LinkBoxes::Candidate &c : candidates_) {
         if (c.lower >= best.distance) break;
         ++best.link_pairs;

@@ -19,6 +19,7 @@ struct SelfCollisionSettings {
 // Two shapes of two links that touch (link_a < link_b).
 struct SelfContact {
     uint32_t link_a = 0, shape_a = 0, link_b = 0, shape_b = 0;
+    int32_t attached_a = -1, attached_b = -1;  // the shapes' attached objects (PlacedShape::attached)
     double depth = 0.0;             // with penetration: paddings included, >= 0
     Vec3 normal = Vec3::Zero();     // moving link a by -depth * normal separates the pair
     Vec3 position = Vec3::Zero();   // midway between the two deepest points, map frame
@@ -42,6 +43,7 @@ struct SelfDistanceOutcome {
     double distance = std::numeric_limits<double>::infinity();
     Vec3 on_a = Vec3::Zero(), on_b = Vec3::Zero();  // witnesses on the padded shapes, map frame
     uint32_t link_a = 0, shape_a = 0, link_b = 0, shape_b = 0;
+    int32_t attached_a = -1, attached_b = -1;
     uint64_t link_pairs = 0;        // enabled pairs measured beyond their boxes
     uint64_t narrow_tests = 0;
 };

@@ -12,7 +12,8 @@ namespace {
 WorldContact contact_of(const PlacedShape &shape, const PlacedShape &object, bool penetration,
                         uint64_t &narrow_tests) {
     WorldContact c;
-    c.link = shape.link, c.shape = shape.shape, c.object = object.link, c.object_shape = object.shape;
+    c.link = shape.link, c.shape = shape.shape, c.attached = shape.attached;
+    c.object = object.link, c.object_shape = object.shape;
     if (penetration) {
         const ShapePairPenetration p = shape_pair_penetration(shape, object, narrow_tests);
         c.depth = p.depth, c.normal = p.normal, c.position = 0.5 * (p.on_a + p.on_b);
@@ -111,7 +112,7 @@ void WorldCollider::nearest(const WorldIndex &index, const PlacedShape &shape, b
         if (!(d.distance < best.distance)) continue;
         best.found = true;
         best.distance = d.distance, best.on_link = d.on_a, best.on_object = d.on_b;
-        best.link = shape.link, best.shape = shape.shape;
+        best.link = shape.link, best.shape = shape.shape, best.attached = shape.attached;
         best.object = object.link, best.object_shape = object.shape;
     }
 }

@@ -19,6 +19,7 @@ namespace octoprox {
 // A robot shape touching an object shape.
 struct WorldContact {
     uint32_t link = 0, shape = 0;          // the robot's
+    int32_t attached = -1;                 // the robot shape's attached object (PlacedShape::attached)
     uint32_t object = 0, object_shape = 0; // the world's
     double depth = 0.0;                    // with penetration: >= 0, the link's padding included
     Vec3 normal = Vec3::Zero();            // moving the link by -depth * normal separates the pair
@@ -45,6 +46,7 @@ struct WorldDistance {
     double distance = std::numeric_limits<double>::infinity();
     Vec3 on_link = Vec3::Zero(), on_object = Vec3::Zero();  // witnesses, map frame
     uint32_t link = 0, shape = 0, object = 0, object_shape = 0;
+    int32_t attached = -1;  // the robot shape's attached object
     uint64_t narrow_tests = 0;
 };
 
