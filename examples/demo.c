@@ -4,9 +4,11 @@
  * camera, is ray-cast into an occupancy map; a built-in 7-joint arm
  * (primitives and two meshes, from a URDF string) plans a straight-line
  * joint-space path from above the table down into the table's shadow,
- * space the camera never saw; every waypoint is checked for collision,
- * distance and unknown-space cost with both engines, timed; a picture
- * (PNG) shows a slice of the map, the arm at a few waypoints, the cells it
+ * space the camera never saw; the table is also known as a world object,
+ * read from a MoveIt scene file; every waypoint is checked for collision
+ * and distance (the map and the table) and unknown-space cost with both
+ * engines, timed; a picture (PNG) shows a slice of the map, the known
+ * table, the arm at a few waypoints, the cells and the table points it
  * hits and the unknown-space cost boxes of the path, as in the paper's
  * Fig. 3.  With --real, the same story runs on the real RGB-D frame and
  * the PR2 of the shared data folder.
@@ -75,6 +77,20 @@ static const double kStart[DEMO_ARM_JOINTS] = {0.0, -0.3, 0.0, 1.0, 0.0, 0.8, 0.
 static const double kGoal[DEMO_ARM_JOINTS] = {0.0, 1.75, 0.0, 0.2, 0.0, -0.3, 1.57};
 
 static int is_pedestal(const char *name) { return strcmp(name, "pedestal") == 0; }
+
+/* The room's table as the robot knows it, a MoveIt scene exported from
+ * RViz (.scene text, MoveIt 1.1 and later): the object's pose, then per
+ * shape its sizes, its pose in the object frame and a colour.  A 1 x 1.2 m
+ * top 3 cm thick at 0.70-0.73 m and four 5 cm legs (room_frame.h). */
+static const char kTableScene[] =
+    "opx-demo room\n"
+    "* table\n1.7 0 0\n0 0 0 1\n5\n"
+    "box\n1 1.2 0.03\n0 0 0.715\n0 0 0 1\n0.6 0.4 0.2 1\n"
+    "box\n0.05 0.05 0.7\n-0.455 -0.555 0.35\n0 0 0 1\n0.6 0.4 0.2 1\n"
+    "box\n0.05 0.05 0.7\n-0.455 0.555 0.35\n0 0 0 1\n0.6 0.4 0.2 1\n"
+    "box\n0.05 0.05 0.7\n0.455 -0.555 0.35\n0 0 0 1\n0.6 0.4 0.2 1\n"
+    "box\n0.05 0.05 0.7\n0.455 0.555 0.35\n0 0 0 1\n0.6 0.4 0.2 1\n"
+    "0\n.\n";
 
 static int load_arm(const char *out_dir, opx_linkset **out) {
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
@@ -167,6 +183,10 @@ static int run_room(const demo_args *a) {
     s.tool_link = "hand";
     s.picture.tool_label = "HAND";
     s.picture.body_label = "PEDESTAL (STILL, NOT CHECKED)";
+    s.scene_name = "opx-demo-table.scene";
+    s.scene_text = kTableScene;
+    s.known_name = "table";
+    s.picture.known_label = "KNOWN TABLE: A WORLD OBJECT FROM A MOVEIT .SCENE";
     side_view(&s, &frame, a->quick);
     s.out_dir = a->out_dir;
     s.picture_name = "opx-demo.png";

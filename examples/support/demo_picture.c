@@ -13,7 +13,7 @@
 #define MARGIN_LEFT 56
 #define MARGIN_TOP 44
 #define MARGIN_RIGHT 80
-#define LEGEND_HEIGHT 164
+#define LEGEND_HEIGHT 164 /* 188 with known objects: one more line */
 #define LEGEND_WIDTH 1000 /* its longest line, the last, is 960 pixels */
 
 const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
@@ -21,6 +21,8 @@ const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {
 const colour kText = {20, 20, 20}, kSensor = {0, 120, 200};
 /* The still body in brown, apart from the greys and the arms' colours. */
 const colour kBody = {165, 110, 55}, kBodyEdge = {105, 65, 25};
+/* Known objects in a teal of their own, hatched. */
+const colour kKnown = {0, 125, 110};
 const colour kArmColours[PICTURE_MAX_ARMS] = {{20, 150, 60}, {0, 150, 175}, {40, 80, 225}, {130, 50, 200},
                                               {205, 40, 160}, {110, 110, 40}, {60, 60, 60}, {0, 0, 0}};
 
@@ -178,6 +180,15 @@ static void draw_legend(picture_frame *f, const picture_input *in) {
     }
     x = MARGIN_LEFT;
     y += 24;
+    if (in->known != NULL) {
+        picture_known_swatch(f, x, y);
+        x += 30 + canvas_text(&f->c, x + 30, y, in->known_label ? in->known_label : "KNOWN OBJECTS", kText, 2) + 24;
+        canvas_fill_disc(&f->c, x + 11, y + 7, 6.0, kCollision, 1.0);
+        canvas_fill_disc(&f->c, x + 11, y + 7, 3.5, kFree, 1.0);
+        canvas_text(&f->c, x + 30, y, "WHERE THE ARM TOUCHES IT", kText, 2);
+        x = MARGIN_LEFT;
+        y += 24;
+    }
     for (i = 0; i < in->arm_count; ++i)
         x = legend_entry(f, x, y, kArmColours[i], ARM_ALPHA, kArmColours[i], in->arm_collides[i], in->arm_labels[i]);
     y += 24;
@@ -224,12 +235,15 @@ int demo_picture_write(const picture_input *in, const char *path) {
     f.view = &in->view;
     f.plot_w = (int)ceil((in->view.u_max - in->view.u_min) * in->view.pixels_per_metre);
     f.plot_h = (int)ceil((in->view.v_max - in->view.v_min) * in->view.pixels_per_metre);
-    if (canvas_create(&f.c, picture_width(in, f.plot_w), (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT)) != 0)
+    if (canvas_create(&f.c, picture_width(in, f.plot_w),
+                      (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT + (in->known != NULL ? 24 : 0))) != 0)
         return -1;
     draw_slice(&f, in->map);
     draw_cost_boxes(&f, in);
+    picture_draw_known(&f, in);
     picture_draw_robot(&f, in);
     draw_collisions(&f, in);
+    picture_draw_object_contacts(&f, in);
     picture_draw_tool_path(&f, in);
     draw_sensor(&f, in);
     draw_notes(&f, in);

@@ -2,7 +2,8 @@
  * The demo's picture, in the manner of paper Fig. 3: a slice of the map
  * (occupied, free, unknown in distinct colours), the robot at a few
  * waypoints of its path (silhouettes projected onto the slice plane), the
- * cells it collides with, and the boxes of unknown space the path sweeps
+ * known objects beside the map (their silhouettes, hatched), the cells and
+ * objects it collides with, and the boxes of unknown space the path sweeps
  * through (their cost), with a legend, axes and a scale bar in metres.
  */
 #ifndef OPX_EXAMPLES_DEMO_PICTURE_H
@@ -53,6 +54,13 @@ typedef struct picture_input {
     const double *colliding_centers;
     const double *colliding_sizes;
     size_t colliding_count;
+    /* Known objects (world.h; may be NULL), drawn hatched in a colour of
+     * their own with their legend label, and the points where the robot
+     * touches them (3 each). */
+    const mesh_out *known;
+    const char *known_label;
+    const double *object_contacts;
+    size_t object_contact_count;
     /* Unknown-space cost boxes of the path. */
     const opx_cost_box *cost_boxes;
     size_t cost_box_count;

@@ -40,6 +40,7 @@ static int query_waypoint(opx_query *query, const opx_octree *map, const opx_lin
     t3 = demo_now_us();
     r->collided[e] = hit.collided;
     r->distance[e] = near.distance;
+    r->nearest_object[e] = near.object;
     r->cost[e] = priced.total_cost;
     r->collide_us[e] = t1 - t0;
     r->distance_us[e] = t2 - t1;
@@ -47,8 +48,40 @@ static int query_waypoint(opx_query *query, const opx_octree *map, const opx_lin
     return 0;
 }
 
-int demo_queries_run(const opx_octree *map, opx_linkset *robot, const opx_pose *poses, size_t waypoint_count,
-                     size_t link_count, waypoint_result *out, opx_query_stats *stats) {
+/* Yes or no, on a context with `world` set (NULL: none) and `map` (may be
+ * NULL with a world). */
+static int collides(opx_query *query, const opx_octree *map, const opx_world *world, const opx_linkset *robot,
+                    int *out) {
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    opx_collision_result hit = OPX_COLLISION_RESULT_INIT;
+    request.max_contacts = 0;
+    if (failed(opx_query_set_world(query, world), "opx_query_set_world") ||
+        failed(opx_query_collide(query, map, robot, &request, &hit), "opx_query_collide"))
+        return -1;
+    *out = hit.collided;
+    return 0;
+}
+
+/* Which of the map and the known objects each waypoint touches. */
+static int split_hits(const opx_octree *map, const opx_world *world, opx_linkset *robot, const opx_pose *poses,
+                      size_t waypoint_count, size_t link_count, waypoint_result *out) {
+    opx_query *query = NULL;
+    size_t w;
+    int status = 0;
+    if (failed(opx_query_create(NULL, &query), "opx_query_create")) return -1;
+    for (w = 0; w < waypoint_count && status == 0; ++w) {
+        status = failed(opx_linkset_set_poses(robot, poses + w * link_count, link_count, 0), "opx_linkset_set_poses");
+        if (status == 0) status = collides(query, map, NULL, robot, &out[w].hits_map);
+        out[w].hits_objects = 0;
+        if (status == 0 && world != NULL) status = collides(query, NULL, world, robot, &out[w].hits_objects);
+    }
+    opx_query_set_world(query, NULL);
+    opx_query_destroy(query);
+    return status;
+}
+
+int demo_queries_run(const opx_octree *map, const opx_world *world, opx_linkset *robot, const opx_pose *poses,
+                     size_t waypoint_count, size_t link_count, waypoint_result *out, opx_query_stats *stats) {
     int e;
     size_t w;
     for (e = 0; e < DEMO_ENGINES; ++e) {
@@ -57,16 +90,18 @@ int demo_queries_run(const opx_octree *map, opx_linkset *robot, const opx_pose *
         int status = 0;
         options.engine = kEngines[e];
         if (failed(opx_query_create(&options, &query), "opx_query_create")) return -1;
+        status = failed(opx_query_set_world(query, world), "opx_query_set_world");
         for (w = 0; w < waypoint_count && status == 0; ++w) {
             status = failed(opx_linkset_set_poses(robot, poses + w * link_count, link_count, 0), "opx_linkset_set_poses");
             if (status == 0) status = query_waypoint(query, map, robot, e, &out[w]);
         }
         if (status == 0 && kEngines[e] == OPX_ENGINE_AMORTIZED)
             status = failed(opx_query_get_stats(query, stats), "opx_query_get_stats");
+        opx_query_set_world(query, NULL);
         opx_query_destroy(query);
         if (status != 0) return -1;
     }
-    return 0;
+    return split_hits(map, world, robot, poses, waypoint_count, link_count, out);
 }
 
 int demo_colliding_cells(const opx_octree *map, const opx_linkset *robot, double **centers, double **sizes,

@@ -2,6 +2,7 @@
 #include "demo_story.h"
 
 #include "demo_queries.h"
+#include "demo_world.h"
 #include "shape_mesh.h"
 
 #include <math.h>
@@ -14,6 +15,10 @@
 
 typedef struct story_state {
     opx_octree *map;
+    opx_world *world; /* the known objects; NULL without */
+    char scene_path[4096];
+    int step;         /* the report's step number */
+    int64_t first_hit; /* the first waypoint colliding with the map or an object, -1: none */
     uint32_t link_count;
     opx_pose *poses;             /* waypoint_count x link_count */
     waypoint_result *results;
@@ -44,10 +49,23 @@ static int ingest(const demo_story *s, story_state *st) {
         return -1;
     st->ingest_ms = (demo_now_us() - start) * 1e-3;
     if (failed(opx_octree_get_stats(st->map, &stats), "opx_octree_get_stats")) return -1;
-    printf("1. sensor frame   %s\n", s->frame_label);
-    printf("2. ingest         ray-cast %llu points into a %g cm map in %.0f ms: %llu occupied, %llu free leaves\n",
-           (unsigned long long)report.points_used, s->resolution * 100.0, st->ingest_ms,
+    printf("%d. sensor frame   %s\n", ++st->step, s->frame_label);
+    printf("%d. ingest         ray-cast %llu points into a %g cm map in %.0f ms: %llu occupied, %llu free leaves\n",
+           ++st->step, (unsigned long long)report.points_used, s->resolution * 100.0, st->ingest_ms,
            (unsigned long long)stats.leaves_occupied, (unsigned long long)stats.leaves_free);
+    return 0;
+}
+
+/* The known objects: the scene written as MoveIt exports it, read back. */
+static int load_known_objects(const demo_story *s, story_state *st) {
+    char objects[256];
+    if (s->scene_text == NULL) return 0;
+    if (demo_world_load(s->out_dir, s->scene_name, s->scene_text, st->scene_path, sizeof st->scene_path,
+                        &st->world) != 0)
+        return -1;
+    demo_world_describe(st->world, objects, sizeof objects);
+    printf("%d. known objects  %s, read from a MoveIt scene (.scene text); checked beside the map\n", ++st->step,
+           objects);
     return 0;
 }
 
@@ -71,9 +89,9 @@ static int plan_path(const demo_story *s, story_state *st) {
         for (l = 0; l < st->link_count; ++l) opx_linkset_get_pose(s->robot, l, &st->poses[w * st->link_count + l]);
     }
     st->fk_us = (demo_now_us() - start) / (double)n;
-    printf("3. robot          %s\n", s->robot_label);
-    printf("4. path           %zu waypoints on a straight line in joint space (%zu joints); FK %.1f us a waypoint\n", n,
-           s->joint_count, st->fk_us);
+    printf("%d. robot          %s\n", ++st->step, s->robot_label);
+    printf("%d. path           %zu waypoints on a straight line in joint space (%zu joints); FK %.1f us a waypoint\n",
+           ++st->step, n, s->joint_count, st->fk_us);
     return 0;
 }
 
@@ -119,46 +137,78 @@ static double median_us(const story_state *st, size_t n, size_t offset, int engi
     return m;
 }
 
-static void print_table(const demo_story *s, const story_state *st) {
+/* What waypoint w touches: "no", "map", the known objects' name, "both". */
+static const char *hit_label(const demo_story *s, const waypoint_result *r) {
+    if (!r->collided[0]) return "no";
+    if (r->hits_map && r->hits_objects) return "both";
+    return r->hits_objects ? s->known_name : "map";
+}
+
+/* What is nearest: "map" or the object's name. */
+static const char *nearest_label(const story_state *st, const waypoint_result *r) {
+    const char *name = "?";
+    if (r->nearest_object[0] < 0) return "map";
+    opx_world_get_object_name(st->world, (uint32_t)r->nearest_object[0], &name);
+    return name;
+}
+
+static void print_table(const demo_story *s, story_state *st) {
     const size_t n = s->waypoint_count, step = n > 12 ? n / 10 : 1;
     size_t w;
-    printf("5. each waypoint  collision, distance and unknown-space cost, both engines (times in us)\n");
-    printf("   %4s  %-8s  %10s  %10s   %-24s  %-24s\n", "wp", "collides", "distance m", "cost m^3", "direct coll/dist/cost",
-           "amortized coll/dist/cost");
+    printf("%d. each waypoint  collision, distance%s and unknown-space cost, both engines (times in us)\n", ++st->step,
+           st->world != NULL ? " (the map and the known objects)" : "");
+    printf("   %4s  %-8s  %10s %-8s %10s   %-24s  %-24s\n", "wp", "collides", "distance m", "nearest", "cost m^3",
+           "direct coll/dist/cost", "amortized coll/dist/cost");
     for (w = 0; w < n; ++w) {
         const waypoint_result *r = &st->results[w];
-        const int first_hit = (int64_t)w == st->path.first_colliding_waypoint;
+        const int first_hit = (int64_t)w == st->first_hit;
         if (w % step != 0 && w + 1 != n && !first_hit) continue;
-        printf("   %4zu  %-8s  %10.4f  %10.5f   %6.0f /%6.0f /%6.0f    %6.0f /%6.0f /%6.0f%s\n", w,
-               r->collided[0] ? "YES" : "no", r->distance[0], r->cost[0], r->collide_us[0], r->distance_us[0],
-               r->cost_us[0], r->collide_us[1], r->distance_us[1], r->cost_us[1], first_hit ? "   <- first collision" : "");
+        printf("   %4zu  %-8s  %10.4f %-8s %10.5f   %6.0f /%6.0f /%6.0f    %6.0f /%6.0f /%6.0f%s\n", w, hit_label(s, r),
+               r->distance[0], nearest_label(st, r), r->cost[0], r->collide_us[0], r->distance_us[0], r->cost_us[0],
+               r->collide_us[1], r->distance_us[1], r->cost_us[1], first_hit ? "   <- first collision" : "");
     }
 }
 
-static void print_summary(const demo_story *s, const story_state *st) {
+static void print_collisions(const demo_story *s, story_state *st) {
     const size_t n = s->waypoint_count;
-    size_t w, disagree = 0, colliding = 0;
+    size_t w, colliding = 0, on_map = 0, on_objects = 0;
+    for (w = 0; w < n; ++w) {
+        colliding += st->results[w].collided[0] != 0;
+        on_map += st->results[w].hits_map != 0;
+        on_objects += st->results[w].hits_objects != 0;
+    }
+    printf("%d. path query     %s%s; minimum distance %.4f m at waypoint %lld; swept unknown-space cost %.4f m^3 in "
+           "%llu cells (%.1f ms)\n",
+           ++st->step, st->path.collided ? "collides" : "collision-free",
+           st->world != NULL ? " with the map (paths check the map)" : "", st->path.min_distance,
+           (long long)st->path.min_distance_waypoint, st->path.total_cost, (unsigned long long)st->path.cost_boxes_found,
+           st->path_ms);
+    if (st->world != NULL && st->first_hit >= 0)
+        printf("                  with the known %s: first collision at waypoint %lld; %zu of %zu waypoints collide "
+               "(%zu with the map, %zu with the %s)\n",
+               s->known_name, (long long)st->first_hit, colliding, n, on_map, on_objects, s->known_name);
+    else if (st->first_hit >= 0)
+        printf("                  first collision at waypoint %lld; %zu of %zu waypoints collide\n",
+               (long long)st->first_hit, colliding, n);
+}
+
+static void print_summary(const demo_story *s, story_state *st) {
+    const size_t n = s->waypoint_count;
+    size_t w, disagree = 0;
     double worst = 0.0;
     for (w = 0; w < n; ++w) {
         const waypoint_result *r = &st->results[w];
         const double diff = fabs(r->distance[0] - r->distance[1]);
-        colliding += r->collided[0] != 0;
-        disagree += r->collided[0] != r->collided[1] || diff > 1e-9 || fabs(r->cost[0] - r->cost[1]) > 1e-12;
+        disagree += r->collided[0] != r->collided[1] || diff > 1e-9 || fabs(r->cost[0] - r->cost[1]) > 1e-12 ||
+                    r->nearest_object[0] != r->nearest_object[1];
         if (diff > worst) worst = diff;
     }
-    printf("6. path query     %s; minimum distance %.4f m at waypoint %lld; swept unknown-space cost %.4f m^3 in "
-           "%llu cells (%.1f ms)\n",
-           st->path.collided ? "collides" : "collision-free", st->path.min_distance,
-           (long long)st->path.min_distance_waypoint, st->path.total_cost, (unsigned long long)st->path.cost_boxes_found,
-           st->path_ms);
-    if (st->path.collided)
-        printf("                  first collision at waypoint %lld; %zu of %zu waypoints collide\n",
-               (long long)st->path.first_colliding_waypoint, colliding, n);
-    printf("7. engines        %s on all %zu waypoints (largest distance difference %.1e m)\n",
+    print_collisions(s, st);
+    printf("%d. engines        %s on all %zu waypoints (largest distance difference %.1e m)\n", ++st->step,
            disagree ? "DISAGREE" : "agree (collision, distance, cost)", n, worst);
-    printf("8. timings        median a waypoint: direct %.0f us collision, %.0f us distance, %.0f us cost;\n",
-           median_us(st, n, offsetof(waypoint_result, collide_us), 0), median_us(st, n, offsetof(waypoint_result, distance_us), 0),
-           median_us(st, n, offsetof(waypoint_result, cost_us), 0));
+    printf("%d. timings        median a waypoint: direct %.0f us collision, %.0f us distance, %.0f us cost;\n",
+           ++st->step, median_us(st, n, offsetof(waypoint_result, collide_us), 0),
+           median_us(st, n, offsetof(waypoint_result, distance_us), 0), median_us(st, n, offsetof(waypoint_result, cost_us), 0));
     printf("                  amortized %.0f us collision, %.0f us distance, %.0f us cost (cost queries need the octree: "
            "direct inside),\n",
            median_us(st, n, offsetof(waypoint_result, collide_us), 1), median_us(st, n, offsetof(waypoint_result, distance_us), 1),
@@ -170,7 +220,7 @@ static void print_summary(const demo_story *s, const story_state *st) {
 /* A few waypoints to draw: the ends, the first collision, and between. */
 static size_t pick_waypoints(const demo_story *s, const story_state *st, size_t *out) {
     const size_t n = s->waypoint_count;
-    const int64_t hit = st->path.first_colliding_waypoint;
+    const int64_t hit = st->first_hit;
     size_t candidates[5] = {0, n / 3, hit >= 0 ? (size_t)hit : n / 2, 2 * n / 3, n - 1}, count = 0, i, j;
     for (i = 0; i < 5; ++i) {
         int seen = 0;
@@ -222,14 +272,29 @@ static int tool_path(const demo_story *s, const story_state *st, double **out, u
     return 0;
 }
 
+/* The known objects and the points where the robot touches them, for the
+ * picture (none without a world). */
+static void known_for_picture(const demo_story *s, const story_state *st, mesh_out *known, double **contacts,
+                              size_t *count) {
+    size_t w;
+    mesh_init(known);
+    if (st->world == NULL) return;
+    demo_world_mesh(st->world, known);
+    for (w = 0; w < s->waypoint_count; ++w) {
+        if (!st->results[w].hits_objects) continue;
+        opx_linkset_set_poses(s->robot, st->poses + w * st->link_count, st->link_count, 0);
+        demo_world_contacts(st->world, s->robot, contacts, count);
+    }
+}
+
 static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
-    static mesh_out arms[PICTURE_MAX_ARMS], body;
+    static mesh_out arms[PICTURE_MAX_ARMS], body, known;
     static char labels[PICTURE_MAX_ARMS][32];
     uint32_t *groups = malloc((st->link_count + 1) * sizeof *groups);
     size_t picked[5], count = pick_waypoints(s, st, picked), i, w;
-    double *centers = NULL, *sizes = NULL, *tool = NULL;
+    double *centers = NULL, *sizes = NULL, *tool = NULL, *contacts = NULL;
     unsigned char *tool_hits = NULL;
-    size_t cells = 0;
+    size_t cells = 0, contact_count = 0;
     int status;
     picture_input *p = &s->picture;
     if (groups == NULL) return -1;
@@ -238,6 +303,10 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
         opx_linkset_set_poses(s->robot, st->poses + w * st->link_count, st->link_count, 0);
         demo_colliding_cells(st->map, s->robot, &centers, &sizes, &cells);
     }
+    known_for_picture(s, st, &known, &contacts, &contact_count);
+    p->known = st->world != NULL ? &known : NULL;
+    p->object_contacts = contacts;
+    p->object_contact_count = contact_count;
     link_groups(s, st->link_count, 1, groups);
     robot_mesh(s, st, 0, groups, &body);
     p->body = body.face_count > 0 ? &body : NULL;
@@ -267,6 +336,8 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
     status = demo_picture_write(p, path);
     for (i = 0; i < (size_t)p->arm_count; ++i) mesh_free(&arms[i]);
     mesh_free(&body);
+    mesh_free(&known);
+    free(contacts);
     free(groups);
     free(centers);
     free(sizes);
@@ -275,7 +346,17 @@ static int draw(demo_story *s, story_state *st, char *path, size_t path_size) {
     p->tool_path = NULL;
     p->tool_collides = NULL;
     p->tool_path_count = 0;
+    p->known = NULL;
+    p->object_contacts = NULL;
+    p->object_contact_count = 0;
     return status;
+}
+
+static int64_t first_collision(const demo_story *s, const story_state *st) {
+    size_t w;
+    for (w = 0; w < s->waypoint_count; ++w)
+        if (st->results[w].collided[0]) return (int64_t)w;
+    return -1;
 }
 
 int demo_story_run(demo_story *s) {
@@ -284,10 +365,13 @@ int demo_story_run(demo_story *s) {
     int status;
     memset(&st, 0, sizeof st);
     st.amortized = (opx_query_stats)OPX_QUERY_STATS_INIT;
-    status = ingest(s, &st) == 0 && plan_path(s, &st) == 0 ? 0 : -1;
+    st.first_hit = -1;
+    status = ingest(s, &st) == 0 && load_known_objects(s, &st) == 0 && plan_path(s, &st) == 0 ? 0 : -1;
     if (status == 0)
-        status = demo_queries_run(st.map, s->robot, st.poses, s->waypoint_count, st.link_count, st.results, &st.amortized);
+        status = demo_queries_run(st.map, st.world, s->robot, st.poses, s->waypoint_count, st.link_count, st.results,
+                                  &st.amortized);
     if (status == 0) status = path_query(s, &st);
+    if (status == 0) st.first_hit = first_collision(s, &st);
     if (status == 0) {
         print_table(s, &st);
         print_summary(s, &st);
@@ -299,8 +383,11 @@ int demo_story_run(demo_story *s) {
         status = failed(opx_octree_save_file(st.map, map, OPX_FORMAT_BT), "opx_octree_save_file");
     }
     if (status == 0) printf("\npicture  %s\nmap      %s (octovis, or: octoprox info / export)\n", picture, map);
+    if (status == 0 && st.world != NULL)
+        printf("scene    %s (MoveIt .scene text; octoprox check MAP --scene FILE --urdf ROBOT)\n", st.scene_path);
     free(st.poses);
     free(st.results);
+    opx_world_destroy(st.world);
     opx_octree_destroy(st.map);
     return status;
 }

@@ -1,9 +1,10 @@
 /*
  * The demo's story, the same for the built-in room and the real data: a
- * sensor frame is ingested into a map; a robot follows a straight-line
- * path in joint space; every waypoint is checked for collision, distance
- * and the cost of unknown space with both engines (timed); one path query
- * sums the swept cost; a picture shows it all.
+ * sensor frame is ingested into a map; known objects, when given, are read
+ * from a MoveIt scene; a robot follows a straight-line path in joint
+ * space; every waypoint is checked for collision and distance (the map and
+ * the known objects) and the cost of unknown space with both engines
+ * (timed); one path query sums the swept cost; a picture shows it all.
  */
 #ifndef OPX_EXAMPLES_DEMO_STORY_H
 #define OPX_EXAMPLES_DEMO_STORY_H
@@ -35,6 +36,10 @@ typedef struct demo_story {
     int (*is_body_link)(const char *name);
     /* The link whose path the picture draws, a dot a waypoint (NULL: none). */
     const char *tool_link;
+    /* Known objects beside the map (NULL: none): a MoveIt scene as .scene
+     * text, written to out_dir/scene_name and read back into a world, and
+     * what the report calls them ("table"). */
+    const char *scene_name, *scene_text, *known_name;
     /* What the picture shows (map is filled in by the story). */
     picture_input picture;
     const char *out_dir, *picture_name, *map_name;

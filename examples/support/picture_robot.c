@@ -122,3 +122,44 @@ void picture_draw_robot(picture_frame *f, const picture_input *in) {
     if (in->body != NULL) draw_body(f, in->body);
     draw_arms(f, in);
 }
+
+/* Diagonal stripes, 3 pixels of 8, so the silhouette reads over any cell
+ * colour and apart from the arms' flat tints. */
+static int is_hatched(int x, int y) { return (x + y) % 8 < 3; }
+
+void picture_draw_known(picture_frame *f, const picture_input *in) {
+    const size_t n = (size_t)f->c.width * f->c.height;
+    unsigned char *mask;
+    size_t i;
+    if (in->known == NULL || in->known->face_count == 0) return;
+    mask = malloc(n);
+    if (mask == NULL || silhouette_mask(f, in->known, mask) != 0) {
+        free(mask);
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        const int x = (int)(i % f->c.width), y = (int)(i / f->c.width);
+        if (mask[i]) canvas_pixel(&f->c, x, y, kKnown, is_hatched(x, y) ? 0.85 : 0.2);
+    }
+    draw_outline(f, mask, kKnown, 0);
+    free(mask);
+}
+
+void picture_draw_object_contacts(picture_frame *f, const picture_input *in) {
+    size_t i;
+    for (i = 0; i < in->object_contact_count; ++i) {
+        double p[2];
+        picture_to_pixel(f, &in->object_contacts[3 * i], p);
+        canvas_fill_disc(&f->c, p[0], p[1], 6.0, kCollision, 1.0);
+        canvas_fill_disc(&f->c, p[0], p[1], 3.5, kFree, 1.0);
+    }
+}
+
+void picture_known_swatch(picture_frame *f, int x, int y) {
+    int px, py;
+    for (py = y; py <= y + 14; ++py)
+        for (px = x; px <= x + 22; ++px) {
+            const int edge = px < x + 2 || px > x + 20 || py < y + 2 || py > y + 12;
+            canvas_pixel(&f->c, px, py, kKnown, edge ? 1.0 : is_hatched(px, py) ? 0.85 : 0.2);
+        }
+}
