@@ -8,7 +8,9 @@
 // The broad phase is an AabbTree over the placed shapes of the enabled
 // objects, built by the first reader after a change (thread-safe, as
 // LinkSet::tree()): a const World is ready to query from any number of
-// threads, and changing it needs exclusive access.
+// threads, and changing it needs exclusive access.  Batch queries make
+// the tree and their meshes' placements on the calling thread before
+// their workers start (BatchWorkers::prepare), so the workers only read.
 #pragma once
 
 #include "robot/shape.hpp"

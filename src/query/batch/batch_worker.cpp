@@ -63,8 +63,12 @@ void BatchWorker::add_self_distance(const LinkSet &posed, const ConfigurationSet
     answer.collided = context_.self_collide(posed, yes_no).collided;
 }
 
+// The world's lazily made parts (its object tree, its meshes' placed
+// vertices) are made here, on the caller's thread: the workers only read.
 void BatchWorkers::prepare(size_t count, const LinkSet &links, const JointTree &joints, const World *world) {
-    if (world != nullptr) world->index();
+    if (world != nullptr)
+        for (const PlacedShape *shape : world->index().shapes)
+            if (shape->kind == ShapeKind::kMesh) shape->place_mesh();
     while (workers_.size() < count) workers_.push_back(std::make_unique<BatchWorker>(options_));
     for (size_t i = 0; i < count; ++i) {
         workers_[i]->robot().bind(links, joints);

@@ -5,9 +5,10 @@
 // per configuration, and the amortized engine's trees stay built.
 //
 // The octree may be null when a world is set: the objects alone are
-// checked.  The world is only read by the workers: its tree of object
-// shapes, built lazily by the first reader after a change, is built by
-// BatchWorkers::prepare on the caller's thread before the work is split.
+// checked.  The world is only read by the workers: what it makes lazily
+// for its first reader after a change (its tree of object shapes, its
+// meshes' placed vertices) BatchWorkers::prepare makes on the caller's
+// thread before the work is split.
 #pragma once
 
 #include "query/batch/batch_types.hpp"
@@ -54,7 +55,7 @@ public:
 
     // `count` workers ready to pose `links` with `joints` and to check the
     // world's objects (null: none) beside the octree.  The world's object
-    // tree is built here, so the workers only read it.
+    // tree and mesh placements are made here, so the workers only read.
     void prepare(size_t count, const LinkSet &links, const JointTree &joints, const World *world);
     BatchWorker &operator[](size_t index) { return *workers_[index]; }
 
