@@ -16,9 +16,19 @@ namespace {
 // SolidPrimitive types and the operations of moveit_msgs/CollisionObject.
 constexpr int kBox = 1, kSphere = 2, kCylinder = 3, kCone = 4;
 
+// YAML aliases (*name) repeat an anchored node without repeating its text,
+// and nested ones multiply: a few kilobytes could name billions of
+// vertices.  Every element read (object, shape, pose, vertex, triangle)
+// spends one unit of a budget of four per byte of the text (plus 4096): a
+// scene without aliases spends at most one per byte, as every element
+// takes a byte or more of it.
+constexpr size_t kElementsPerByte = 4;
+constexpr size_t kElementsAtLeast = 4096;
+
 class YamlScene {
 public:
-    YamlScene(const std::string &source, World &world) : source_(source), world_(world) {}
+    YamlScene(const std::string &source, World &world, size_t text_size)
+        : source_(source), world_(world), budget_(kElementsPerByte * text_size + kElementsAtLeast) {}
 
     // `first_line`: where the document starts in the source (0-based).
     void read_document(const YAML::Node &root, int first_line);
@@ -48,10 +58,20 @@ private:
     void shapes(const YAML::Node &object, const std::string &field, SceneObjectUpdate &update);
     SceneObjectUpdate object(const YAML::Node &node, const std::string &field);
 
+    // Spends one element of the budget (see kElementsPerByte).
+    void spend(const YAML::Node &node, const std::string &field);
+
     const std::string &source_;
     World &world_;
     int first_line_ = 0;
+    size_t budget_;
 };
+
+void YamlScene::spend(const YAML::Node &node, const std::string &field) {
+    if (budget_ == 0)
+        scene_fail(where(node, field), "the scene's aliases (*name) repeat more elements than its size allows");
+    --budget_;
+}
 
 double YamlScene::number(const YAML::Node &node, const std::string &field, const YAML::Node &parent) {
     if (!node.IsDefined()) scene_fail(where(node, field, parent), "missing");
@@ -122,11 +142,16 @@ bool YamlScene::pose_given(const YAML::Node &node, const std::string &field) {
 std::vector<Pose> YamlScene::poses(const YAML::Node &object, const char *key, const std::string &field) {
     const YAML::Node list = sequence(object, key, field);
     std::vector<Pose> out;
-    for (size_t i = 0; i < list.size(); ++i) out.push_back(pose(list[i], format("%s.%s[%zu]", field.c_str(), key, i)));
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string f = format("%s.%s[%zu]", field.c_str(), key, i);
+        spend(list[i], f);
+        out.push_back(pose(list[i], f));
+    }
     return out;
 }
 
 ShapeDef YamlScene::primitive(const YAML::Node &node, const std::string &field) {
+    spend(node, field);
     if (!node.IsMap()) scene_fail(where(node, field), "not a map of type and dimensions");
     const YAML::Node type_node = child(node, "type");
     const int type = integer(type_node, field + ".type", node);
@@ -152,13 +177,19 @@ ShapeDef YamlScene::primitive(const YAML::Node &node, const std::string &field) 
 }
 
 ShapeDef YamlScene::mesh(const YAML::Node &node, const std::string &field) {
+    spend(node, field);
     if (!node.IsMap()) scene_fail(where(node, field), "not a map of vertices and triangles");
     const YAML::Node vertices = sequence(node, "vertices", field), triangles = sequence(node, "triangles", field);
     std::vector<Vec3> points;
-    for (size_t i = 0; i < vertices.size(); ++i) points.push_back(point(vertices[i], format("%s.vertices[%zu]", field.c_str(), i)));
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        const std::string f = format("%s.vertices[%zu]", field.c_str(), i);
+        spend(vertices[i], f);
+        points.push_back(point(vertices[i], f));
+    }
     std::vector<std::array<uint32_t, 3>> faces;
     for (size_t t = 0; t < triangles.size(); ++t) {
         const std::string f = format("%s.triangles[%zu]", field.c_str(), t);
+        spend(triangles[t], f);
         const YAML::Node indices = sequence(triangles[t], "vertex_indices", f);
         if (indices.size() != 3) scene_fail(where(triangles[t], f + ".vertex_indices"), "not 3 vertex indices");
         std::array<uint32_t, 3> face{};
@@ -200,6 +231,7 @@ void YamlScene::shapes(const YAML::Node &object, const std::string &field, Scene
 }
 
 SceneObjectUpdate YamlScene::object(const YAML::Node &node, const std::string &field) {
+    spend(node, field);
     if (!node.IsMap()) scene_fail(where(node, field), "not a map (a moveit_msgs/CollisionObject)");
     SceneObjectUpdate u;
     u.where = where(node, field);
@@ -300,7 +332,7 @@ std::vector<YamlPiece> split_documents(const std::string &text) {
 }  // namespace
 
 void read_scene_yaml(const std::string &text, const std::string &source, World &world) {
-    YamlScene scene(source, world);
+    YamlScene scene(source, world, text.size());
     bool any = false;
     for (const YamlPiece &piece : split_documents(text)) {
         if (!piece.has_content) continue;

@@ -199,6 +199,35 @@ static void test_malformed_scene_text(void **state) {
     EXPECT_TEXT("scene\n* post\n0 0 0\n0 0 0 1\n-1\n", OPX_ERROR_CORRUPT, "line 5", "shape count", "'-1'");
 }
 
+/* `count` aliases of `anchor` as a flow list: "[*a, *a, ...]". */
+static void append_aliases(char *text, size_t size, const char *anchor, int count) {
+    strncat(text, "[", size - strlen(text) - 1);
+    for (int i = 0; i < count; ++i) {
+        strncat(text, i > 0 ? ", *" : "*", size - strlen(text) - 1);
+        strncat(text, anchor, size - strlen(text) - 1);
+    }
+    strncat(text, "]\n", size - strlen(text) - 1);
+}
+
+/* Aliases may repeat nodes, not multiply a scene far beyond its text. */
+static void test_yaml_aliases(void **state) {
+    (void)state;
+    assert_int_equal(yaml_object_count("world:\n  collision_objects:\n"
+                                       "    - {id: a, pose: &p {position: {x: 1}}, primitives: [&s {type: 2, dimensions: [0.1]}]}\n"
+                                       "    - {id: b, pose: *p, primitives: [*s, *s]}\n"),
+                     2);
+    /* 20 appends of 20 meshes of 23 vertices and 20 triangles, from about 700 bytes. */
+    char text[4096] = "anchors:\n  - &v {x: 1}\n  - &t {vertex_indices: [0, 1, 2]}\n  - &V ";
+    append_aliases(text, sizeof text, "v", 23);
+    strncat(text, "  - &T ", sizeof text - strlen(text) - 1);
+    append_aliases(text, sizeof text, "t", 20);
+    strncat(text, "  - &m {vertices: *V, triangles: *T}\n  - &M ", sizeof text - strlen(text) - 1);
+    append_aliases(text, sizeof text, "m", 20);
+    strncat(text, "  - &o {id: a, operation: 2, meshes: *M}\nworld:\n  collision_objects: ", sizeof text - strlen(text) - 1);
+    append_aliases(text, sizeof text, "o", 20);
+    EXPECT_YAML(text, OPX_ERROR_CORRUPT, "aliases (*name) repeat more elements than its size allows");
+}
+
 /* Names leave the library as C strings: one holding a NUL byte is refused. */
 static void test_names_holding_a_nul_byte(void **state) {
     (void)state;
@@ -234,6 +263,7 @@ int main(void) {
         cmocka_unit_test(test_scene_text_without_object_poses),
         cmocka_unit_test(test_malformed_yaml),
         cmocka_unit_test(test_yaml_documents),
+        cmocka_unit_test(test_yaml_aliases),
         cmocka_unit_test(test_malformed_scene_text),
         cmocka_unit_test(test_names_holding_a_nul_byte),
         cmocka_unit_test(test_malformed_files_name_the_file),
