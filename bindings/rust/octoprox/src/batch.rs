@@ -36,7 +36,7 @@
 //! ```
 use crate::batch_types::fraction;
 use crate::error::{check, Error, Result};
-use crate::{sys, BatchRequest, JointOrder, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query};
+use crate::{sys, BatchRequest, JointOrder, LinkSet, MotionRequest, MotionResult, Octree, Pose, Query, World};
 use std::ptr;
 
 /// Where the robot's root link is (map frame) for each row.
@@ -113,6 +113,14 @@ impl Query {
     pub fn check_configurations(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64],
                                 bases: BasePoses<'_>, request: &BatchRequest)
         -> Result<ConfigurationAnswers> {
+        self.check_configurations_tree(tree.as_raw(), robot, rows, bases, request)
+    }
+
+    /// [`Query::check_configurations`] on a live octree handle, or NULL
+    /// with a world set.
+    fn check_configurations_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, rows: &[f64],
+                                 bases: BasePoses<'_>, request: &BatchRequest)
+        -> Result<ConfigurationAnswers> {
         let (count, joints) = row_count(robot, rows, request.joint_order, "Query::check_configurations: rows")?;
         let mut collided = vec![0u8; count];
         let mut distances = vec![0.0; if request.compute_distance { count } else { 0 }];
@@ -122,10 +130,10 @@ impl Query {
             let out_distances = if distances.is_empty() { ptr::null_mut() } else { distances.as_mut_ptr() };
             // SAFETY: rows holds count packed rows of `joints` doubles, the
             // bases base_count poses, the outputs `count` values each; live
-            // handles, tree and robot only read.
+            // handles (tree may be NULL: the library checks it), only read.
             check(unsafe {
                 sys::opx_query_check_configurations(
-                    self.as_raw_mut(), tree.as_raw(), robot.as_raw(), rows.as_ptr(), count, joints, 0,
+                    self.as_raw_mut(), tree, robot.as_raw(), rows.as_ptr(), count, joints, 0,
                     base, base_count, 0, &request, collided.as_mut_ptr(), out_distances, count)
             })?;
         }
@@ -141,6 +149,13 @@ impl Query {
     /// cost's boxes are then read with [`Query::cost_boxes`].
     pub fn check_motion(&mut self, tree: &Octree, robot: &LinkSet, start: &[f64], goal: &[f64],
                         base: Option<&Pose>, request: &MotionRequest) -> Result<MotionResult> {
+        self.check_motion_tree(tree.as_raw(), robot, start, goal, base, request)
+    }
+
+    /// [`Query::check_motion`] on a live octree handle, or NULL with a
+    /// world set.
+    fn check_motion_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, start: &[f64],
+                         goal: &[f64], base: Option<&Pose>, request: &MotionRequest) -> Result<MotionResult> {
         if start.len() != goal.len() {
             return Err(Error::invalid(
                 format!("Query::check_motion: start has {} joints, goal {}", start.len(), goal.len()),
@@ -150,9 +165,10 @@ impl Query {
         let mut out = sys::opx_motion_result::default();
         self.hold_cost_boxes(0);
         let base = base.map_or(ptr::null(), |b| b as *const Pose);
-        // SAFETY: start and goal hold start.len() doubles each; live handles.
+        // SAFETY: start and goal hold start.len() doubles each; live handles
+        // (tree may be NULL: the library checks it).
         check(unsafe {
-            sys::opx_query_check_motion(self.as_raw_mut(), tree.as_raw(), robot.as_raw(), start.as_ptr(),
+            sys::opx_query_check_motion(self.as_raw_mut(), tree, robot.as_raw(), start.as_ptr(),
                                         goal.as_ptr(), start.len(), base, &request, &mut out)
         })?;
         self.hold_cost_boxes(out.cost_box_count as usize);
@@ -167,6 +183,14 @@ impl Query {
     /// (without cost), the root link placed by `bases` (map frame).
     pub fn check_motions(&mut self, tree: &Octree, robot: &LinkSet, starts: &[f64], goals: &[f64],
                          bases: BasePoses<'_>, request: &MotionRequest) -> Result<MotionAnswers> {
+        self.check_motions_tree(tree.as_raw(), robot, starts, goals, bases, request)
+    }
+
+    /// [`Query::check_motions`] on a live octree handle, or NULL with a
+    /// world set.
+    fn check_motions_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, starts: &[f64],
+                          goals: &[f64], bases: BasePoses<'_>, request: &MotionRequest)
+        -> Result<MotionAnswers> {
         let (count, joints) = row_count(robot, starts, request.joint_order, "Query::check_motions: starts")?;
         if goals.len() != starts.len() {
             return Err(Error::invalid(
@@ -179,10 +203,11 @@ impl Query {
         if count > 0 {
             let (base, base_count) = bases.raw();
             // SAFETY: starts and goals hold count packed rows of `joints`
-            // doubles, the outputs `count` values; live handles.
+            // doubles, the outputs `count` values; live handles (tree may be
+            // NULL: the library checks it).
             check(unsafe {
                 sys::opx_query_check_motions(
-                    self.as_raw_mut(), tree.as_raw(), robot.as_raw(), starts.as_ptr(), goals.as_ptr(), count,
+                    self.as_raw_mut(), tree, robot.as_raw(), starts.as_ptr(), goals.as_ptr(), count,
                     joints, 0, base, base_count, 0, &request, collided.as_mut_ptr(),
                     first_fractions.as_mut_ptr(), count)
             })?;
@@ -190,4 +215,43 @@ impl Query {
         let first_fractions = first_fractions.into_iter().map(fraction).collect();
         Ok(MotionAnswers { collided: flags(collided), first_fractions })
     }
+
+    /// [`Query::check_configurations`] against the octree (`None`: no map)
+    /// and the enabled objects of `world` together: a configuration
+    /// collides when it touches either, its distance is the least of both.
+    /// Objects have no cost.  Workers share the world read-only, so the
+    /// answers do not depend on `max_threads`.
+    pub fn check_configurations_with_world(&mut self, tree: Option<&Octree>, world: &World, robot: &LinkSet,
+                                           rows: &[f64], bases: BasePoses<'_>, request: &BatchRequest)
+        -> Result<ConfigurationAnswers> {
+        self.with_world(world, |query| {
+            query.check_configurations_tree(tree_ptr(tree), robot, rows, bases, request)
+        })
+    }
+
+    /// [`Query::check_motion`] against the octree (`None`: no map) and the
+    /// enabled objects of `world` together.  The cost comes from the octree
+    /// alone: `compute_cost` needs one.
+    #[allow(clippy::too_many_arguments)]
+    pub fn check_motion_with_world(&mut self, tree: Option<&Octree>, world: &World, robot: &LinkSet,
+                                   start: &[f64], goal: &[f64], base: Option<&Pose>, request: &MotionRequest)
+        -> Result<MotionResult> {
+        self.with_world(world, |query| query.check_motion_tree(tree_ptr(tree), robot, start, goal, base, request))
+    }
+
+    /// [`Query::check_motions`] against the octree (`None`: no map) and
+    /// the enabled objects of `world` together.
+    #[allow(clippy::too_many_arguments)]
+    pub fn check_motions_with_world(&mut self, tree: Option<&Octree>, world: &World, robot: &LinkSet,
+                                    starts: &[f64], goals: &[f64], bases: BasePoses<'_>, request: &MotionRequest)
+        -> Result<MotionAnswers> {
+        self.with_world(world, |query| {
+            query.check_motions_tree(tree_ptr(tree), robot, starts, goals, bases, request)
+        })
+    }
+}
+
+/// The octree's handle, or NULL for none (a query with a world only).
+fn tree_ptr(tree: Option<&Octree>) -> *const sys::opx_octree {
+    tree.map_or(ptr::null(), Octree::as_raw)
 }

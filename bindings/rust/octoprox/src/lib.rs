@@ -15,8 +15,12 @@
 //!   the pairs [`LinkSet::set_pair_enabled`] (and an SRDF) leave enabled.
 //! * [`World`]: known objects beside the map (tables, shelves, walls),
 //!   built by hand or read from MoveIt planning scenes
-//!   ([`World::from_scene_file`]); [`Query::collide_with_world`] and
-//!   [`Query::distance_with_world`] check them with or without a map.
+//!   ([`World::from_scene_file`]); [`Query::collide_with_world`],
+//!   [`Query::distance_with_world`], [`Query::path_with_world`] and the
+//!   batches' `_with_world` variants check them with or without a map.
+//! * Objects attached to links (a grasped part, with the fingers as touch
+//!   links): [`LinkSet::attach_object`], [`LinkSet::attach_world_object`],
+//!   [`LinkSet::detach`]; contacts and distances name them (`attached`).
 //! * [`read_point_cloud`]: PCD and PLY files as points (the library's
 //!   readers).
 //!
@@ -54,6 +58,7 @@
 //! ```
 #![deny(missing_docs)]
 
+mod attached;
 mod batch;
 mod batch_types;
 mod cloud;

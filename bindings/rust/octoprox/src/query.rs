@@ -185,16 +185,25 @@ impl Query {
     /// invalid argument).  The link set itself is not moved.  Without
     /// distance or cost the check stops at the first colliding waypoint.
     /// A path query holds no contacts; its cost boxes are read with
-    /// [`Query::cost_boxes`].
+    /// [`Query::cost_boxes`].  With known objects beside the map:
+    /// [`Query::path_with_world`].
     pub fn path(&mut self, tree: &Octree, links: &LinkSet, poses: &[Pose],
                 request: &PathRequest) -> Result<PathResult> {
+        self.path_tree(tree.as_raw(), links, poses, request)
+    }
+
+    /// [`Query::path`] on a live octree handle, or NULL with a world set
+    /// ([`Query::path_with_world`]).
+    pub(crate) fn path_tree(&mut self, tree: *const sys::opx_octree, links: &LinkSet, poses: &[Pose],
+                            request: &PathRequest) -> Result<PathResult> {
         let waypoints = links.waypoint_count(poses, "Query::path: poses")?;
         let request = request.to_c();
         let mut out = sys::opx_path_result::default();
         (self.contact_count, self.cost_box_count) = (0, 0);
-        // SAFETY: poses holds waypoints x links packed poses; live handles.
+        // SAFETY: poses holds waypoints x links packed poses; live handles
+        // (tree may be NULL: the library checks it).
         check(unsafe {
-            sys::opx_query_path(self.raw, tree.as_raw(), links.as_raw(), poses.as_ptr(),
+            sys::opx_query_path(self.raw, tree, links.as_raw(), poses.as_ptr(),
                                 waypoints, 0, 0, &request, &mut out)
         })?;
         self.cost_box_count = out.cost_box_count as usize;

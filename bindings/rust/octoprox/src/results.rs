@@ -137,6 +137,10 @@ pub struct Contact {
     /// The object's shape touched (its index within the object); 0 for a
     /// cell.
     pub object_shape: u32,
+    /// The object attached to the link ([`crate::LinkSet::attach_object`]:
+    /// its index) whose shape touched, `shape` then being the shape's index
+    /// within that object; `None` for one of the link's own shapes.
+    pub attached: Option<u32>,
 }
 
 impl Contact {
@@ -153,6 +157,7 @@ impl Contact {
             position: c.position,
             object: object_index(c.object),
             object_shape: c.object_shape,
+            attached: object_index(c.attached),
         })
     }
 }
@@ -233,6 +238,10 @@ pub struct DistanceResult {
     /// The object's nearest shape (its index within the object); 0 for a
     /// cell.
     pub object_shape: u32,
+    /// The object attached to `link` ([`crate::LinkSet::attach_object`]:
+    /// its index) whose shape is the nearest, `shape` then being its index
+    /// within that object; `None` for one of the link's own shapes.
+    pub attached: Option<u32>,
 }
 
 impl DistanceResult {
@@ -252,12 +261,14 @@ impl DistanceResult {
             narrow_tests: c.narrow_tests,
             object: object_index(c.object),
             object_shape: c.object_shape,
+            attached: object_index(c.attached),
         })
     }
 }
 
-/// A world object's index as the C API gives it, -1 meaning a cell.
-fn object_index(raw: i32) -> Option<u32> {
+/// A world or attached object's index as the C API gives it, -1 meaning
+/// none (a cell, or the link's own shape).
+pub(crate) fn object_index(raw: i32) -> Option<u32> {
     u32::try_from(raw).ok()
 }
 

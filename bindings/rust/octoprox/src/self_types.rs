@@ -14,6 +14,7 @@
 //! assert_eq!(PairSamplingOptions::default().samples, 10_000);
 //! ```
 use crate::enums::{flag, is_set};
+use crate::results::object_index;
 use crate::sys;
 
 /// A self-collision query.
@@ -96,6 +97,12 @@ pub struct SelfContact {
     /// With `compute_penetration`: the contact point, midway between each
     /// shape's point deepest in the other, map frame.
     pub position: [f64; 3],
+    /// The object attached to `link_a` ([`crate::LinkSet::attach_object`]:
+    /// its index) whose shape touches, `shape_a` then being the shape's
+    /// index within that object; `None` for one of the link's own shapes.
+    pub attached_a: Option<u32>,
+    /// As `attached_a`, for `link_b` and `shape_b`.
+    pub attached_b: Option<u32>,
 }
 
 impl SelfContact {
@@ -108,6 +115,8 @@ impl SelfContact {
             depth: c.depth,
             normal: c.normal,
             position: c.position,
+            attached_a: object_index(c.attached_a),
+            attached_b: object_index(c.attached_b),
         }
     }
 }
@@ -168,6 +177,12 @@ pub struct SelfDistanceResult {
     pub link_pairs: u64,
     /// Exact distances between convex pieces.
     pub narrow_tests: u64,
+    /// The object attached to `link_a` whose shape is the nearest
+    /// (`shape_a` then its index within the object), as in
+    /// [`SelfContact::attached_a`]; `None` for the link's own shape.
+    pub attached_a: Option<u32>,
+    /// As `attached_a`, for `link_b` and `shape_b`.
+    pub attached_b: Option<u32>,
 }
 
 impl SelfDistanceResult {
@@ -184,6 +199,8 @@ impl SelfDistanceResult {
             point_on_b: c.point_on_b,
             link_pairs: c.link_pairs,
             narrow_tests: c.narrow_tests,
+            attached_a: object_index(c.attached_a),
+            attached_b: object_index(c.attached_b),
         }
     }
 }

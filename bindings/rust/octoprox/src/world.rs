@@ -6,10 +6,14 @@
 //! length along z), each at a pose in the object frame.  Objects have no
 //! padding (a link's padding is the margin); a mesh is a surface.  Indices
 //! are positions: removing an object moves every later one down by one.
-//! [`Query::collide_with_world`] and [`Query::distance_with_world`] check a
-//! world's enabled objects, with or without an octree; contacts and
-//! distances name the object ([`crate::Contact::object`],
-//! [`crate::DistanceResult::object`]).
+//! [`Query::collide_with_world`], [`Query::distance_with_world`],
+//! [`Query::path_with_world`], [`Query::check_configurations_with_world`],
+//! [`Query::check_motion_with_world`] and
+//! [`Query::check_motions_with_world`] check a world's enabled objects,
+//! with or without an octree (the world is set for the call alone);
+//! contacts and distances name the object ([`crate::Contact::object`],
+//! [`crate::DistanceResult::object`]).  [`LinkSet::attach_world_object`]
+//! attaches a copy of an object to a link.
 //!
 //! ```
 //! use octoprox::{pose_at, CollisionRequest, LinkSet, Query, Shape, World};
@@ -35,7 +39,7 @@
 use crate::enums::c_enum;
 use crate::error::{c_string, check, to_c_string, Result};
 use crate::{check_version, sys, CollisionRequest, CollisionResult, DistanceRequest, DistanceResult, LinkSet,
-            Octree, Pose, Query, Shape, ShapeKind};
+            Octree, PathRequest, PathResult, Pose, Query, Shape, ShapeKind};
 use std::path::Path;
 use std::ptr;
 
@@ -285,7 +289,7 @@ impl Query {
     /// Runs `call` with `world` set on this context, and detaches it again
     /// whatever the call returns, so the context never keeps a pointer to
     /// a world that Rust may drop.
-    fn with_world<T>(&mut self, world: &World, call: impl FnOnce(&mut Query) -> Result<T>) -> Result<T> {
+    pub(crate) fn with_world<T>(&mut self, world: &World, call: impl FnOnce(&mut Query) -> Result<T>) -> Result<T> {
         // SAFETY: both handles are live; the world stays borrowed until it
         // is detached below.
         check(unsafe { sys::opx_query_set_world(self.as_raw_mut(), world.as_raw()) })?;
@@ -317,5 +321,14 @@ impl Query {
     pub fn distance_with_world(&mut self, tree: Option<&Octree>, world: &World, links: &LinkSet,
                                request: &DistanceRequest) -> Result<DistanceResult> {
         self.with_world(world, |query| query.distance_tree(tree.map_or(ptr::null(), Octree::as_raw), links, request))
+    }
+
+    /// [`Query::path`] against the octree (`None`: no map) and the enabled
+    /// objects of `world` together: a waypoint collides when it touches
+    /// either, distances are the least of both.  Objects have no cost: the
+    /// path's cost comes from the octree alone (`compute_cost` needs one).
+    pub fn path_with_world(&mut self, tree: Option<&Octree>, world: &World, links: &LinkSet, poses: &[Pose],
+                           request: &PathRequest) -> Result<PathResult> {
+        self.with_world(world, |query| query.path_tree(tree.map_or(ptr::null(), Octree::as_raw), links, poses, request))
     }
 }
