@@ -1,0 +1,34 @@
+// One run of opx-bench-world: for each object count, the PR2's
+// configurations checked against the objects alone, the real map alone and
+// both (octoprox, direct engine: forward kinematics then opx_query_collide
+// per configuration, a world set on the context), and against the same
+// objects by FCL's collision manager (the robot's objects placed at the
+// configuration's link poses, then its manager against the objects').
+// Rounds are interleaved; pose updates and queries are timed apart.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "batch_report.hpp"
+
+namespace world_bench {
+
+struct RunOptions {
+    bool quick = false;
+    size_t configurations = 10000;
+    int rounds = 5;
+    std::vector<size_t> object_counts{10, 100, 1000};
+};
+
+struct RunResult {
+    std::vector<batch_bench::Row> rows;
+    // The answer with the map and the objects is the union of the two
+    // alone, for every configuration (a library defect otherwise).
+    bool composition_agrees = true;
+};
+
+RunResult run_all(const RunOptions &options);
+
+}  // namespace world_bench
