@@ -1,10 +1,10 @@
 // opx-bench-world: the PR2 among known objects.  10,000 reaching
 // configurations checked against 10, 100 and 1,000 random objects (boxes,
-// cylinders, spheres, a tenth of them as meshes) within the arms' reach,
-// the real 2 cm RGB-D frame, and both (octoprox, direct engine, forward
-// kinematics and one opx_query_collide per configuration), next to FCL's
-// collision manager on the same objects.  Microseconds per configuration,
-// pose updates and queries apart.
+// cylinders, spheres, a tenth of them as meshes; the same 10 within the
+// arms' reach, the others around them), the real 2 cm RGB-D frame, and both (octoprox, direct engine, forward
+// kinematics and one opx_query_collide per configuration; batch calls),
+// next to FCL's collision manager on the same objects.  Microseconds per
+// configuration, pose updates and queries apart.
 //   opx-bench-world [--quick] [--json FILE] [--configurations N] [--rounds N]
 #include <cstdio>
 #include <cstdlib>
@@ -23,7 +23,8 @@ void print_usage(FILE *out) {
     std::fprintf(out,
                  "usage: opx-bench-world [--quick] [--json FILE] [--configurations N] [--rounds N]\n"
                  "  --quick             smoke run: 100 configurations, one round; checks that the answer with\n"
-                 "                      the map and the objects is the union of the two alone\n"
+                 "                      the map and the objects is the union of the two alone, and that the\n"
+                 "                      batch call answers as the single calls do\n"
                  "  --json FILE         also write the rows as a JSON list\n"
                  "  --configurations N  PR2 configurations (default 10000)\n"
                  "  --rounds N          timed rounds of every pipeline (default 5)\n"

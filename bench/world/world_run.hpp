@@ -1,8 +1,9 @@
 // One run of opx-bench-world: for each object count, the PR2's
 // configurations checked against the objects alone, the real map alone and
 // both (octoprox, direct engine: forward kinematics then opx_query_collide
-// per configuration, a world set on the context), and against the same
-// objects by FCL's collision manager (the robot's objects placed at the
+// per configuration, a world set on the context; and the map with the
+// objects in batch calls on 1 and 2 threads), and against the same objects
+// by FCL's collision manager (the robot's objects placed at the
 // configuration's link poses, then its manager against the objects').
 // Rounds are interleaved; pose updates and queries are timed apart.
 #pragma once
@@ -24,8 +25,9 @@ struct RunOptions {
 
 struct RunResult {
     std::vector<batch_bench::Row> rows;
-    // The answer with the map and the objects is the union of the two
-    // alone, for every configuration (a library defect otherwise).
+    // For every configuration, the answer with the map and the objects is
+    // the union of the two alone, and the batch call's is the single
+    // calls' (a library defect otherwise).
     bool composition_agrees = true;
 };
 
