@@ -15,15 +15,6 @@ namespace {
 thread_local bool t_scope_active = false;
 thread_local float t_threshold = 0.0f;
 
-uint32_t pack(const int lo[3], const int hi[3]) {
-    uint32_t packed = bounds::kValid;
-    for (int axis = 0; axis < 3; ++axis) {
-        packed |= static_cast<uint32_t>(lo[axis]) << (5 * axis);
-        packed |= static_cast<uint32_t>(hi[axis]) << (15 + 5 * axis);
-    }
-    return packed;
-}
-
 }  // namespace
 
 BoundsScope::BoundsScope(float threshold_log_odds) : was_active_(t_scope_active), previous_(t_threshold) {
@@ -59,7 +50,7 @@ void BoundedNode::updateOccupancyChildren() {
         }
     }
     // No obstacle below: the engines skip the node by its max log-odds.
-    packed_bounds_ = hi[0] < 0 ? bounds::kFull : pack(lo, hi);
+    packed_bounds_ = hi[0] < 0 ? bounds::kFull : extent::pack(lo, hi);
 }
 
 }  // namespace octoprox

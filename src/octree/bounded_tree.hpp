@@ -23,19 +23,21 @@
 #include <octomap/OcTreeNode.h>
 
 #include "octree/child_block_pool.hpp"
+#include "octree/point_extent.hpp"
 
 #include <cstdint>
 #include <string>
 
 namespace octoprox {
 
+// The packing of point_extent.hpp: a leaf's extent and an inner node's box
+// share it.
 namespace bounds {
-constexpr int kSlots = 32;                   // a cube's edge is cut into 32 slots
-constexpr uint32_t kValid = 1u << 31;
+using extent::hi;
+using extent::kSlots;  // a cube's edge is cut into 32 slots
+using extent::kValid;
+using extent::lo;
 constexpr uint32_t kFull = kValid | 0x3FFF8000u;  // lo = 0, hi = 31 on every axis
-
-inline int lo(uint32_t packed, int axis) { return (packed >> (5 * axis)) & 31; }
-inline int hi(uint32_t packed, int axis) { return (packed >> (15 + 5 * axis)) & 31; }
 }  // namespace bounds
 
 class BoundedNode : public octomap::OcTreeNode {

@@ -7,6 +7,7 @@
 #include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/octree_view.hpp"
+#include "octree/point_slots.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,22 +1,18 @@
 // Point extents: the box of the sensed points that fell in an occupied
 // leaf, kept in the leaf's otherwise unused 4 bytes (bounded_tree.hpp).
 //
-// The packing is the inner nodes' obstacle-box packing: per axis the first
-// and last 1/32nd of the leaf's cube that holds a point (5 bits each), and
-// a validity bit; 0 means no extent (the whole cube is the obstacle).  A
-// point is put in its slot by the same arithmetic that decodes the slot
-// (obstacle_box in octree_cell.hpp), then moved outward while the decoded
-// face misses it, so the decoded box always holds every point recorded.
+// Inner nodes pack their obstacle boxes the same way (bounded_tree.hpp):
+// per axis the first and last 1/32nd of the cube that holds a point (5
+// bits each), and a validity bit; 0 means no extent (the whole cube is the
+// obstacle).  Points become slots at the finest depth with a slack that
+// the engines' decoding pad covers (point_slots.hpp), so the decoded box
+// (obstacle_box in octree_cell.hpp) always holds every point recorded.
 //
-// Points become extents at the finest depth (PointSlots); extents move
-// between depths when OctoMap prunes eight equal leaves into
+// Extents move between depths when OctoMap prunes eight equal leaves into
 // their parent or expands a pruned leaf: a child's slot s lies in the
 // parent's slot (s + 32 * side) / 2 (exact, no rounding), and a parent's
 // slot p covers the child's slots 2 (p - 16 side) and the next one.
 #pragma once
-
-#include "geometry/aabb.hpp"
-#include "octree/octree_view.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -39,30 +35,6 @@ inline uint32_t pack(const int lo_slot[3], const int hi_slot[3]) {
     }
     return packed;
 }
-
-// A point's slots in a finest cell, per axis: the slot of the point moved
-// down and up by kSlack slots.  The slack is far above the rounding of
-// the arithmetic here (coordinates within 2^15 cells of the origin:
-// ~1e-10 slots) and far below the padding the engines decode a box with
-// (obstacle_box_pad: ~1e-6 slots), so the decoded box holds the point.  A
-// point just outside the cell (rounding of its key) takes the face slot.
-class PointSlots {
-public:
-    explicit PointSlots(double resolution) : resolution_(resolution), per_metre_(kSlots / resolution) {}
-
-    // key: the cell's integer key on the axis; coordinate: the point's.
-    void of(uint16_t key, double coordinate, int &lo_slot, int &hi_slot) const {
-        const double cell_lo = static_cast<double>(static_cast<int32_t>(key) - kKeyCenter) * resolution_;
-        const double t = (coordinate - cell_lo) * per_metre_;
-        lo_slot = clamp(static_cast<int>(t - kSlack));
-        hi_slot = clamp(static_cast<int>(t + kSlack));
-    }
-
-private:
-    static constexpr double kSlack = 1e-7;
-    static int clamp(int s) { return s < 0 ? 0 : (s > kSlots - 1 ? kSlots - 1 : s); }
-    double resolution_, per_metre_;
-};
 
 // The union of two valid extents of one cube.
 inline uint32_t merge(uint32_t a, uint32_t b) {

@@ -191,7 +191,9 @@ void assign_extents(BoundedOcTree &tree, BoundedNode *node, const std::vector<ui
 }  // namespace
 
 bool SensorOctree::set_leaf_extents(const std::vector<uint32_t> &extents) {
-    if (extents.size() != leaf_extents().size()) return false;
+    size_t leaves = 0;
+    for_each_leaf(view(), [&](OctreeView::NodeRef, const CellKey &) { ++leaves; });
+    if (extents.size() != leaves) return false;
     size_t next = 0;
     if (tree_->getRoot() != nullptr) assign_extents(*tree_, tree_->getRoot(), extents, next);
     ++generation_;  // query contexts holding boxes of this map rebuild them

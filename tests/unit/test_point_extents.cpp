@@ -11,6 +11,7 @@
 #include "octree/octoprox_map_io.hpp"
 #include "octree/octree_cell.hpp"
 #include "octree/point_extent.hpp"
+#include "octree/point_slots.hpp"
 #include "octree/traverse.hpp"
 #include "unit_scenes.hpp"
 
