@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <random>
 #include <string>
 #include <vector>
@@ -35,11 +36,7 @@ constexpr double kSpacing = 0.005;      // surface samples, metres
 constexpr double kNearSurface = 0.05;   // configurations within this of an object
 constexpr int kJoints = batch_bench::kArmJoints;
 
-void check(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    std::fprintf(stderr, "opx-bench-extents: %s: %s\n", what, opx_last_error());
-    std::exit(1);
-}
+using paper_tables::check_opx;
 
 struct Configurations {
     std::vector<double> rows;    // kJoints per configuration
@@ -56,7 +53,7 @@ Configurations near_surface(opx_linkset *arm, paper_tables::FclRobot &fcl, FclSc
     std::vector<double> q(kJoints);
     while (out.exact.size() < count) {
         for (double &v : q) v = joint(rng);
-        check(opx_linkset_set_joint_positions(arm, q.data(), q.size(), nullptr), "set_joint_positions");
+        check_opx(opx_linkset_set_joint_positions(arm, q.data(), q.size(), nullptr), "set_joint_positions");
         fcl.set_link_poses(paper_tables::link_poses(arm));
         const double d = paper_tables::fcl_managers_distance(fcl.manager(), *objects.manager, 1e-6);
         if (d > kNearSurface) continue;
@@ -82,9 +79,9 @@ double check_all(opx_query *query, const opx_octree *tree, const opx_linkset *ar
     opx_batch_request request = OPX_BATCH_REQUEST_INIT;
     request.obstacle_geometry = geometry;
     const auto start = std::chrono::steady_clock::now();
-    check(opx_query_check_configurations(query, tree, arm, set.rows.data(), n, kJoints, 0, nullptr, 0, 0, &request,
-                                         collided.data(), nullptr, n),
-          "check_configurations");
+    check_opx(opx_query_check_configurations(query, tree, arm, set.rows.data(), n, kJoints, 0, nullptr, 0, 0,
+                                             &request, collided.data(), nullptr, n),
+              "check_configurations");
     return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count() / double(n);
 }
 
@@ -124,11 +121,12 @@ opx_octree *map_of(const std::vector<double> &points, double resolution) {
     opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
     options.resolution = resolution;
     opx_octree *tree = nullptr;
-    check(opx_octree_create(&options, &tree), "octree_create");
+    check_opx(opx_octree_create(&options, &tree), "octree_create");
     opx_insert_options insert = OPX_INSERT_OPTIONS_INIT;
     insert.mode = OPX_INSERT_ENDPOINTS;  // surfaces only: the free space is not the question here
-    check(opx_octree_insert_points(tree, points.data(), points.size() / 3, 0, OPX_SCALAR_FLOAT64, &insert, nullptr),
-          "insert_points");
+    check_opx(
+        opx_octree_insert_points(tree, points.data(), points.size() / 3, 0, OPX_SCALAR_FLOAT64, &insert, nullptr),
+        "insert_points");
     return tree;
 }
 
@@ -167,7 +165,7 @@ void write_json(const char *path, const std::vector<Row> &rows, const std::strin
 
 }  // namespace
 
-int main(int argc, char **argv) {
+static int run(int argc, char **argv) {
     bool quick = false;
     const char *json = nullptr;
     for (int i = 1; i < argc; ++i) {
@@ -183,10 +181,10 @@ int main(int argc, char **argv) {
     const int rounds = quick ? 1 : 5;
     const std::string cpu = paper_tables::cpu_name();
     opx_linkset *arm = nullptr;
-    check(opx_linkset_load_urdf_string(batch_bench::primitive_arm_urdf().c_str(), nullptr, &arm), "load arm");
+    check_opx(opx_linkset_load_urdf_string(batch_bench::primitive_arm_urdf().c_str(), nullptr, &arm), "load arm");
     paper_tables::FclRobot fcl(arm);
     opx_query *query = nullptr;
-    check(opx_query_create(nullptr, &query), "query_create");
+    check_opx(opx_query_create(nullptr, &query), "query_create");
     std::printf("opx-bench-extents: %s; %d variants of each scene, %zu configurations each, surfaces every %g mm\n",
                 cpu.c_str(), variants, per_scene, kSpacing * 1000);
     std::printf("%-10s %7s %6s %6s %17s %4s %7s %17s %4s %7s %6s\n", "scene", "res", "confs", "exact", "cells keep",
@@ -203,7 +201,7 @@ int main(int argc, char **argv) {
                 const Configurations set = near_surface(arm, fcl, objects, per_scene, 300 + 17 * v + kind);
                 opx_octree *tree = map_of(sample_surfaces(scene, kSpacing), resolution);
                 opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
-                check(opx_octree_get_stats(tree, &stats), "get_stats");
+                check_opx(opx_octree_get_stats(tree, &stats), "get_stats");
                 ModelResult cells, extents;
                 check_models(query, tree, arm, set, rounds, cells, extents);
                 total.configurations += set.exact.size();
@@ -224,4 +222,13 @@ int main(int argc, char **argv) {
     opx_query_destroy(query);
     opx_linkset_destroy(arm);
     return 0;
+}
+
+int main(int argc, char **argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception &error) {
+        std::fprintf(stderr, "opx-bench-extents: %s\n", error.what());
+        return 1;
+    }
 }
