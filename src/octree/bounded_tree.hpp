@@ -134,6 +134,12 @@ public:
         return root;
     }
 
+    // Counts the nodes workers of a parallel update added (update_worker.hpp).
+    void add_worker_nodes(long added) {
+        tree_size = static_cast<size_t>(static_cast<long>(tree_size) + added);
+        size_changed = true;
+    }
+
     // The child-block store's memory (child_blocks.cpp).
     ChildBlockPool &child_blocks() { return child_blocks_; }
     const ChildBlockPool &child_blocks() const { return child_blocks_; }

@@ -16,6 +16,7 @@
 #include "octree/bounded_tree.hpp"
 
 #include "octree/point_extent.hpp"
+#include "octree/update_worker.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -45,28 +46,53 @@ void place_absent_child(AbstractOcTreeNode **pointers, unsigned int child) {
     placeholder->setLogOdds(-std::numeric_limits<float>::infinity());
 }
 
+
+octoprox::ChildBlockPool &pool_of(BoundedTreeBase *tree) {
+    return static_cast<octoprox::BoundedOcTree *>(tree)->child_blocks();
+}
+
+// Blocks come from and go to the map's pool, or, on a thread working on
+// a part of a parallel update, through its worker (update_worker.hpp).
+void *take_block(BoundedTreeBase *tree) {
+    octoprox::UpdateWorker *worker = octoprox::UpdateWorker::current();
+    return worker != nullptr ? worker->allocate() : pool_of(tree).allocate();
+}
+
+void give_block(BoundedTreeBase *tree, void *block) {
+    octoprox::UpdateWorker *worker = octoprox::UpdateWorker::current();
+    if (worker != nullptr) worker->release(block);
+    else pool_of(tree).release(block);
+}
+
+// The map's node count, or a worker's count of its changes to it.
+void count_nodes(size_t &tree_size, bool &size_changed, long delta) {
+    octoprox::UpdateWorker *worker = octoprox::UpdateWorker::current();
+    if (worker != nullptr) {
+        worker->count_nodes(delta);
+        return;
+    }
+    tree_size += delta;
+    size_changed = true;
+}
+
 // Destroys the subtree below `node` (not `node`) and returns its blocks.
-void release_children(octoprox::ChildBlockPool &pool, BoundedNode &node) {
+void release_children(BoundedTreeBase *tree, BoundedNode &node) {
     AbstractOcTreeNode **&children = node.child_pointers();
     if (children == nullptr) return;
     for (unsigned int i = 0; i < 8; ++i) {
         BoundedNode *slot = slot_of(children, i);
-        if (children[i] != nullptr) release_children(pool, *slot);
+        if (children[i] != nullptr) release_children(tree, *slot);
         slot->~BoundedNode();
     }
-    pool.release(children);
+    give_block(tree, children);
     children = nullptr;
-}
-
-octoprox::ChildBlockPool &pool_of(BoundedTreeBase *tree) {
-    return static_cast<octoprox::BoundedOcTree *>(tree)->child_blocks();
 }
 
 }  // namespace
 
 template <>
 void BoundedTreeBase::allocNodeChildren(BoundedNode *node) {
-    auto *block = new (pool_of(this).allocate()) ChildBlock;
+    auto *block = new (take_block(this)) ChildBlock;
     for (unsigned int i = 0; i < 8; ++i) {
         block->pointers[i] = nullptr;
         place_absent_child(block->pointers, i);
@@ -81,8 +107,7 @@ BoundedNode *BoundedTreeBase::createNodeChild(BoundedNode *node, unsigned int ch
     slot->~BoundedNode();
     BoundedNode *created = new (slot) BoundedNode();
     node->children[child] = created;
-    tree_size++;
-    size_changed = true;
+    count_nodes(tree_size, size_changed, +1);
     return created;
 }
 
@@ -90,12 +115,11 @@ BoundedNode *BoundedTreeBase::createNodeChild(BoundedNode *node, unsigned int ch
 template <>
 void BoundedTreeBase::deleteNodeChild(BoundedNode *node, unsigned int child) {
     BoundedNode *deleted = slot_of(node->children, child);
-    release_children(pool_of(this), *deleted);
+    release_children(this, *deleted);
     deleted->~BoundedNode();
     place_absent_child(node->children, child);
     node->children[child] = nullptr;
-    tree_size--;
-    size_changed = true;
+    count_nodes(tree_size, size_changed, -1);
 }
 
 // OctoMap's pruneNode, with the block freed instead of the array.  The
@@ -117,7 +141,7 @@ bool BoundedTreeBase::pruneNode(BoundedNode *node) {
     }
     node->set_point_extent(merged);
     for (unsigned int i = 0; i < 8; ++i) deleteNodeChild(node, i);
-    release_children(pool_of(this), *node);  // the block, now empty
+    release_children(this, *node);  // the block, now empty
     return true;
 }
 
@@ -142,7 +166,7 @@ void BoundedTreeBase::expandNode(BoundedNode *node) {
 // not in a block.
 template <>
 void BoundedTreeBase::deleteNodeRecurs(BoundedNode *node) {
-    release_children(pool_of(this), *node);
+    release_children(this, *node);
     delete node;
 }
 

@@ -1,5 +1,6 @@
 #include "octree/frame_cells.hpp"
 
+#include "base/parallel.hpp"
 #include "broadphase/morton.hpp"
 #include "broadphase/radix_sort.hpp"
 
@@ -10,6 +11,8 @@ namespace octoprox {
 namespace {
 
 constexpr int kBrickCodeBits = 3 * (16 - brick::kShift);
+// Below this many bricks a frame's cells are read out on one thread.
+constexpr size_t kBricksPerThread = 2048;
 
 // A brick's bits in the marks are x + 8 y + 64 z; the map's order inside
 // the brick is the Morton order of (x, y, z).
@@ -87,8 +90,16 @@ void grow_by_brick(KeyBox &box, uint64_t brick_code, const uint64_t bits[brick::
     box.grow(hi);
 }
 
+// One thread's share of the cells: its bricks' cells written from `out`
+// on, its counts and box.
+struct EmitPart {
+    uint64_t *out = nullptr;
+    uint64_t hits = 0, misses = 0;
+    KeyBox box;
+};
+
 // Emits one brick's cells in Morton order and grows the box by them.
-void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *endpoint, FrameCells &out) {
+void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *endpoint, EmitPart &part) {
     uint64_t hit[brick::kWords], any[brick::kWords];
     to_morton_order(endpoint, hit);
     to_morton_order(crossed, any);
@@ -98,11 +109,40 @@ void emit_brick(uint64_t brick_code, const uint64_t *crossed, const uint64_t *en
             const int b = __builtin_ctzll(bits);
             const uint64_t code = (brick_code << 9) | static_cast<uint64_t>(w * 64 + b);
             const bool is_hit = (hit[w] >> b) & 1;
-            out.cells.push_back(is_hit ? code | FrameCells::kHitBit : code);
-            ++(is_hit ? out.hits : out.misses);
+            *part.out++ = is_hit ? code | FrameCells::kHitBit : code;
+            ++(is_hit ? part.hits : part.misses);
         }
     }
-    grow_by_brick(out.box, brick_code, any);
+    grow_by_brick(part.box, brick_code, any);
+}
+
+size_t cells_in_brick(const uint64_t *crossed, const uint64_t *endpoint) {
+    size_t count = 0;
+    for (int w = 0; w < brick::kWords; ++w) count += static_cast<size_t>(__builtin_popcountll(crossed[w] | endpoint[w]));
+    return count;
+}
+
+// The bricks' cells, in the order of `codes`, into `out`: the bricks split
+// in `threads` runs, each run's place in `out` known from its cell count.
+void emit_bricks(const FrameMarks &marks, const std::vector<uint64_t> &codes, const std::vector<uint32_t> &bricks,
+                 size_t threads, FrameCells &out) {
+    std::vector<size_t> first_cell(codes.size() + 1, 0);
+    for (size_t i = 0; i < codes.size(); ++i)
+        first_cell[i + 1] = first_cell[i] + cells_in_brick(marks.crossed(bricks[i]), marks.endpoint(bricks[i]));
+    out.cells.resize(first_cell.back());
+    std::vector<EmitPart> parts(threads);
+    run_tasks(threads, [&](size_t t) {
+        const size_t begin = codes.size() * t / threads, end = codes.size() * (t + 1) / threads;
+        EmitPart &part = parts[t];
+        part.out = out.cells.data() + first_cell[begin];
+        for (size_t i = begin; i < end; ++i)
+            emit_brick(codes[i], marks.crossed(bricks[i]), marks.endpoint(bricks[i]), part);
+    });
+    for (const EmitPart &part : parts) {
+        out.hits += part.hits;
+        out.misses += part.misses;
+        if (!part.box.empty) out.box.grow(part.box);
+    }
 }
 
 // Cells found outside the marks join the sorted list: sorted, merged with
@@ -129,7 +169,7 @@ void merge_extra(FrameCells &out, std::vector<uint64_t> extra) {
 
 }  // namespace
 
-FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra) {
+FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra, size_t threads) {
     // The non-empty bricks, by the Morton code of their corner.
     std::vector<uint64_t> codes;
     std::vector<uint32_t> bricks;
@@ -150,9 +190,7 @@ FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra) {
     radix_sort(codes, bricks, scratch, options);
 
     FrameCells out;
-    out.cells.reserve(codes.size() * 64);
-    for (size_t i = 0; i < codes.size(); ++i)
-        emit_brick(codes[i], marks.crossed(bricks[i]), marks.endpoint(bricks[i]), out);
+    emit_bricks(marks, codes, bricks, task_count(threads, codes.size() / kBricksPerThread + 1), out);
     merge_extra(out, std::move(extra));
     return out;
 }

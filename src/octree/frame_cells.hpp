@@ -6,6 +6,7 @@
 
 #include "octree/frame_marks.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -24,8 +25,9 @@ struct FrameCells {
 };
 
 // `extra` holds cells found outside the marks (Morton code, kHitBit for an
-// endpoint), in any order, duplicates allowed.
-FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra);
+// endpoint), in any order, duplicates allowed.  Large frames are read out
+// on up to `threads` threads (0: one per hardware thread).
+FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra, size_t threads = 1);
 // The same for cells found without marks alone.
 FrameCells sorted_cells(std::vector<uint64_t> cells);
 

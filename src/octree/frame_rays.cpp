@@ -98,10 +98,10 @@ private:
     Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero();
 };
 
-// Sorts the entries by code and merges each cell's into one.
-void merge_extents(std::vector<CellExtent> &extents) {
-    std::sort(extents.begin(), extents.end(),
-              [](const CellExtent &a, const CellExtent &b) { return a.code < b.code; });
+bool by_code(const CellExtent &a, const CellExtent &b) { return a.code < b.code; }
+
+// Merges each cell's entries, sorted by code, into one.
+void merge_same_cells(std::vector<CellExtent> &extents) {
     size_t kept = 0;
     for (size_t i = 0; i < extents.size(); ++i) {
         if (kept > 0 && extents[kept - 1].code == extents[i].code)
@@ -149,6 +149,8 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
         ++counts.used;
     }
     extents.flush();
+    std::sort(rays.hit_extents.begin(), rays.hit_extents.end(), by_code);
+    merge_same_cells(rays.hit_extents);
 }
 
 template <class T>
@@ -182,10 +184,14 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         append(rays.ends, parts[i].rays.ends);
         append(rays.end_keys, parts[i].rays.end_keys);
         append(rays.hit_keys, parts[i].rays.hit_keys);
+        const size_t before = rays.hit_extents.size();
         append(rays.hit_extents, parts[i].rays.hit_extents);
+        // Each part's entries are sorted (and merged) already.
+        std::inplace_merge(rays.hit_extents.begin(), rays.hit_extents.begin() + static_cast<std::ptrdiff_t>(before),
+                           rays.hit_extents.end(), by_code);
         rays.box.grow(parts[i].rays.box);
     }
-    merge_extents(rays.hit_extents);
+    if (threads > 1) merge_same_cells(rays.hit_extents);
     for (const RayPart &part : parts) {
         counts.used += part.counts.used;
         counts.nonfinite += part.counts.nonfinite;

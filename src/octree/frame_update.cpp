@@ -1,124 +1,163 @@
 #include "octree/frame_update.hpp"
 
+#include "base/parallel.hpp"
 #include "octree/bounded_tree.hpp"
+#include "octree/cell_update.hpp"
+#include "octree/update_worker.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <limits>
+#include <mutex>
 
 namespace octoprox {
 namespace {
 
-constexpr int kDepth = 16;  // OctoMap's leaves
+// Below this many cells a frame updates on the caller's thread: starting
+// a thread costs more than it saves.
+constexpr size_t kCellsPerThread = size_t{1} << 15;
 
-class FrameUpdate {
+// The frame's cells split by the subtrees at `split_depth`: the levels
+// above are walked first on the caller's thread (creating and expanding
+// nodes as the single pass does), the subtrees are then updated on the
+// workers, and the levels above are finished bottom up on the caller's
+// thread.  Subtrees are disjoint, so the map is the single pass's.
+class SplitUpdate {
 public:
-    FrameUpdate(BoundedOcTree &tree, const std::vector<CellExtent> &extents, float occupied_log_odds)
-        : tree_(tree),
-          hit_(tree.getProbHitLog()),
-          miss_(tree.getProbMissLog()),
-          clamp_min_(tree.getClampingThresMinLog()),
-          clamp_max_(tree.getClampingThresMaxLog()),
-          occupied_(occupied_log_odds),
-          extents_(extents) {}
+    SplitUpdate(BoundedOcTree &tree, const std::vector<CellExtent> &extents, float occupied_log_odds,
+                int split_depth)
+        : tree_(tree), extents_(extents), occupied_(occupied_log_odds), split_depth_(split_depth),
+          upper_(tree, extents, occupied_log_odds) {}
 
-    void run(const uint64_t *first, const uint64_t *last) {
-        if (first == last) return;
+    void run(const uint64_t *first, const uint64_t *last, size_t threads) {
         bool created = false;
         BoundedNode *root = tree_.root_for_update(created);
-        apply(root, 0, created, first, last);
+        plan(root, 0, created, first, last);
+        update_subtrees(task_count(threads, subtrees_.size()));
+        finish_upper_levels();
     }
 
 private:
-    // OctoMap's early exit: the leaf holding the cell is clamped in the
-    // direction of the cell's update.
-    bool clamped_for(const BoundedNode *leaf, uint64_t cell) const {
-        const float value = leaf->getLogOdds();
-        return FrameCells::is_hit(cell) ? value >= clamp_max_ : value <= clamp_min_;
-    }
-    bool all_clamped_for(const BoundedNode *leaf, const uint64_t *first, const uint64_t *last) const {
-        for (const uint64_t *cell = first; cell != last; ++cell)
-            if (!clamped_for(leaf, *cell)) return false;
-        return true;
-    }
+    struct Subtree {
+        BoundedNode *node;
+        bool created;
+        const uint64_t *first, *last;
+        bool changed;
+    };
+    // A node above the split whose children were opened: its children's
+    // references are refs_[first_ref, last_ref).
+    struct UpperNode {
+        BoundedNode *node;
+        size_t first_ref, last_ref;
+    };
+    // A child's reference: a subtree's index, ~index of an upper node, or
+    // kUnchanged.
+    static constexpr long kUnchanged = std::numeric_limits<long>::min();
 
-    static unsigned child_index(uint64_t cell, int depth) {
-        return static_cast<unsigned>((FrameCells::code(cell) >> (3 * (kDepth - 1 - depth))) & 7);
-    }
-
-    // The frame's extent of hit cell `code`: the cells come in ascending
-    // order, so a cursor finds each.
-    uint32_t frame_extent(uint64_t code) {
-        while (next_extent_ < extents_.size() && extents_[next_extent_].code < code) ++next_extent_;
-        if (next_extent_ < extents_.size() && extents_[next_extent_].code == code) return extents_[next_extent_].packed;
-        return 0;
-    }
-
-    // A leaf (at `depth`) takes the frame's points of hit cell `cell`; its
-    // log-odds before the frame's update was `before`.
-    void add_points(BoundedNode *leaf, int depth, uint64_t cell, float before) {
-        const uint32_t frame = frame_extent(FrameCells::code(cell));
-        if (frame == 0) return;
-        const uint32_t lifted = extent::lift(frame, FrameCells::code(cell), kDepth - depth);
-        const uint32_t kept = leaf->point_extent();
-        if (extent::valid(kept)) leaf->set_point_extent(extent::merge(kept, lifted));
-        else if (!(before >= occupied_)) leaf->set_point_extent(lifted);
-    }
-
-    void update_leaf(BoundedNode *leaf, bool created, uint64_t cell) {
-        const float before = created ? -std::numeric_limits<float>::infinity() : leaf->getLogOdds();
-        const bool hit = FrameCells::is_hit(cell);
-        tree_.updateNodeLogOdds(leaf, hit ? hit_ : miss_);
-        if (hit) add_points(leaf, kDepth, cell, before);
-        else if (!(leaf->getLogOdds() >= occupied_)) leaf->set_point_extent(0);
-    }
-
-    // Updates the cells [first, last), all inside `node` (at `depth`);
-    // returns whether anything below the node changed.
-    bool apply(BoundedNode *node, int depth, bool created, const uint64_t *first, const uint64_t *last) {
-        if (depth == kDepth) {
-            if (!created && clamped_for(node, *first)) {
-                if (FrameCells::is_hit(*first)) add_points(node, depth, *first, node->getLogOdds());
-                return false;
-            }
-            update_leaf(node, created, *first);
-            return true;
+    long plan(BoundedNode *node, int depth, bool created, const uint64_t *first, const uint64_t *last) {
+        if (depth == split_depth_) {
+            subtrees_.push_back(Subtree{node, created, first, last, false});
+            return static_cast<long>(subtrees_.size() - 1);
         }
-        if (!created && !tree_.nodeHasChildren(node)) {
-            // A leaf above the finest depth (pruned): every cell inside it
-            // holds its value, so it opens only for a cell it does not
-            // already clamp (its points still join its extent).
-            if (all_clamped_for(node, first, last)) {
-                for (const uint64_t *cell = first; cell != last; ++cell)
-                    if (FrameCells::is_hit(*cell)) add_points(node, depth, *cell, node->getLogOdds());
-                return false;
-            }
-            tree_.expandNode(node);
-        }
-        bool changed = false;
+        if (!upper_.opened(node, depth, created, first, last)) return kUnchanged;
+        long children[8];
+        int count = 0;
         while (first != last) {
-            const unsigned index = child_index(*first, depth);
-            const uint64_t *group_end = first + 1;
-            while (group_end != last && child_index(*group_end, depth) == index) ++group_end;
+            const unsigned index = CellUpdate::child_index(*first, depth);
+            const uint64_t *end = CellUpdate::group_end(first, last, depth);
             const bool exists = tree_.nodeChildExists(node, index);
             BoundedNode *child = exists ? tree_.getNodeChild(node, index) : tree_.createNodeChild(node, index);
-            changed |= apply(child, depth + 1, !exists, first, group_end);
-            first = group_end;
+            children[count++] = plan(child, depth + 1, !exists, first, end);
+            first = end;
         }
-        if (changed && !tree_.pruneNode(node)) node->updateOccupancyChildren();
-        return changed;
+        const size_t first_ref = refs_.size();
+        refs_.insert(refs_.end(), children, children + count);
+        upper_nodes_.push_back(UpperNode{node, first_ref, refs_.size()});
+        return ~static_cast<long>(upper_nodes_.size() - 1);
+    }
+
+    // Workers take subtrees in ascending order, each through its own
+    // cursor over the frame's extents.
+    void update_subtrees(size_t threads) {
+        std::mutex pool_lock;
+        std::atomic<size_t> next{0};
+        std::vector<long> nodes_added(threads, 0);
+        std::vector<char> size_changed(threads, 0);
+        run_tasks(threads, [&](size_t t) {
+            const BoundsScope scope(occupied_);
+            UpdateWorker worker(tree_.child_blocks(), pool_lock);
+            const UpdateWorker::Scope installed(worker);
+            CellUpdate update(tree_, extents_, occupied_);
+            for (size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < subtrees_.size();) {
+                Subtree &s = subtrees_[i];
+                s.changed = update.apply(s.node, split_depth_, s.created, s.first, s.last);
+            }
+            nodes_added[t] = worker.nodes_added();
+            size_changed[t] = worker.size_changed();
+        });
+        for (size_t t = 0; t < threads; ++t)
+            if (size_changed[t]) tree_.add_worker_nodes(nodes_added[t]);
+    }
+
+    // Upper nodes were recorded after their children: in that order every
+    // child is finished before its parent.
+    void finish_upper_levels() {
+        std::vector<bool> changed(upper_nodes_.size(), false);
+        for (size_t i = 0; i < upper_nodes_.size(); ++i) {
+            const UpperNode &upper = upper_nodes_[i];
+            bool any = false;
+            for (size_t r = upper.first_ref; r < upper.last_ref; ++r) {
+                const long ref = refs_[r];
+                if (ref == kUnchanged) continue;
+                any |= ref >= 0 ? subtrees_[static_cast<size_t>(ref)].changed : changed[static_cast<size_t>(~ref)];
+            }
+            changed[i] = any;
+            if (any) upper_.changed_below(upper.node);
+        }
     }
 
     BoundedOcTree &tree_;
-    const float hit_, miss_, clamp_min_, clamp_max_, occupied_;
     const std::vector<CellExtent> &extents_;
-    size_t next_extent_ = 0;
+    const float occupied_;
+    const int split_depth_;
+    CellUpdate upper_;  // the levels above the split
+    std::vector<Subtree> subtrees_;
+    std::vector<UpperNode> upper_nodes_;
+    std::vector<long> refs_;
 };
+
+// The depth whose subtrees are about a quarter of the frame's box across,
+// so that even a frame on one side of the map splits into tens of them.
+int split_depth_for(const KeyBox &box) {
+    uint32_t widest = 1;
+    for (int axis = 0; axis < 3; ++axis) widest = std::max(widest, box.hi[axis] - box.lo[axis] + 1);
+    int level = 0;  // subtrees 2^level cells across
+    while (level < 13 && (uint32_t{4} << level) < widest) ++level;
+    return CellUpdate::kDepth - std::max(level, 3);
+}
 
 }  // namespace
 
+size_t frame_update_threads(const FrameCells &cells, uint32_t max_threads) {
+    return task_count(max_threads, cells.cells.size() / kCellsPerThread + 1);
+}
+
+void apply_frame_cells_split(BoundedOcTree &tree, const FrameCells &cells, const std::vector<CellExtent> &extents,
+                             float occupied_log_odds, size_t threads, int split_depth) {
+    if (cells.cells.empty()) return;
+    const uint64_t *first = cells.cells.data(), *last = first + cells.cells.size();
+    SplitUpdate(tree, extents, occupied_log_odds, split_depth).run(first, last, threads);
+}
+
 void apply_frame_cells(BoundedOcTree &tree, const FrameCells &cells, const std::vector<CellExtent> &extents,
-                       float occupied_log_odds) {
-    FrameUpdate(tree, extents, occupied_log_odds)
-        .run(cells.cells.data(), cells.cells.data() + cells.cells.size());
+                       float occupied_log_odds, size_t threads) {
+    if (cells.cells.empty()) return;
+    if (threads > 1)
+        return apply_frame_cells_split(tree, cells, extents, occupied_log_odds, threads, split_depth_for(cells.box));
+    const uint64_t *first = cells.cells.data(), *last = first + cells.cells.size();
+    bool created = false;
+    BoundedNode *root = tree.root_for_update(created);
+    CellUpdate(tree, extents, occupied_log_odds).apply(root, 0, created, first, last);
 }
 
 }  // namespace octoprox

@@ -105,7 +105,7 @@ FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint3
     FrameMarks &marks = workers[0].marks;
     for (size_t i = 1; i < workers.size(); ++i) marks.merge_crossed(workers[i].marks);
     mark_endpoints(rays, marks);
-    return collect_cells(marks, stray_cells(tree, rays, workers));
+    return collect_cells(marks, stray_cells(tree, rays, workers), max_threads);
 }
 
 FrameCells endpoint_cells(const BoundedOcTree &tree, const FrameRays &rays) {
@@ -128,11 +128,12 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     // below take their nodes from reserved blocks, so a frame goes into the
     // map whole or, out of memory, not at all.  (An empty map's root is made
     // by the update, before any cell changes.)
-    reserve_update(*tree_, cells);
+    const size_t update_threads = frame_update_threads(cells, settings.max_threads);
+    reserve_update(*tree_, cells, update_threads);
     ++generation_;
     {
         const BoundsScope scope(occupied_log_odds_);  // keeps the inner obstacle boxes
-        apply_frame_cells(*tree_, cells, rays.hit_extents, occupied_log_odds_);
+        apply_frame_cells(*tree_, cells, rays.hit_extents, occupied_log_odds_, update_threads);
     }
     tree_->child_blocks().release_spares();
     grow_known_bounds(cells.box);

@@ -1,5 +1,7 @@
 #include "octree/update_reserve.hpp"
 
+#include "octree/update_worker.hpp"
+
 #include <algorithm>
 #include <vector>
 
@@ -66,8 +68,9 @@ size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &frame) {
     return blocks;
 }
 
-void reserve_update(BoundedOcTree &tree, const FrameCells &cells) {
-    tree.child_blocks().reserve(child_blocks_needed(tree, cells));
+void reserve_update(BoundedOcTree &tree, const FrameCells &cells, size_t threads) {
+    const size_t batches = threads > 1 ? threads * UpdateWorker::kBatch : 0;
+    tree.child_blocks().reserve(child_blocks_needed(tree, cells) + batches);
 }
 
 }  // namespace octoprox

@@ -18,10 +18,12 @@ namespace octoprox {
 size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &cells);
 
 // Makes sure the tree's pool can hand out that many blocks without a heap
-// allocation; throws std::bad_alloc, changing nothing in the map, if not.
+// allocation, and the batches an update on `threads` threads draws ahead
+// (update_worker.hpp); throws std::bad_alloc, changing nothing in the
+// map, if not.
 // After the update, the tree's pool gives back what was reserved and not
 // used (ChildBlockPool::release_spares): the count is an upper bound, as
 // blocks a prune frees are taken again by later cells.
-void reserve_update(BoundedOcTree &tree, const FrameCells &cells);
+void reserve_update(BoundedOcTree &tree, const FrameCells &cells, size_t threads = 1);
 
 }  // namespace octoprox
