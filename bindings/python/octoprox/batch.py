@@ -89,7 +89,7 @@ class _BasePoses:
 
 
 def _check_operands(tree, robot, where, world=None):
-    bad_tree = tree is None if world is None else tree is not None and not isinstance(tree, Octree)
+    bad_tree = not isinstance(tree, Octree) and (world is None or tree is not None)
     if bad_tree or not isinstance(robot, LinkSet):
         raise TypeError(f"{where}: expected an Octree and a LinkSet (the octree may be None "
                         f"with a world), got {type(tree).__name__} and {type(robot).__name__}")
