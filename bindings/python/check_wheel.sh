@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # ctest python_wheel_install: the README's install, offline.
 #  1. `pip wheel` of this folder with OPX_LIBRARY naming the build tree's
-#     library gives a platform wheel carrying liboctoprox, and leaves no
-#     build output in this folder;
+#     library gives a platform wheel carrying liboctoprox and, where the
+#     interpreter has its headers (Python.h), the compiled call path
+#     octoprox._fastcall, and leaves no build output in this folder;
 #  2. the wheel installs with --no-index into a fresh venv
 #     (--system-site-packages: numpy from Debian's python3-numpy);
 #  3. the README's Python example runs from a directory outside the tree
 #     with OPX_LIBRARY, LD_LIBRARY_PATH and PYTHONPATH unset, and imports the
-#     venv's package and its bundled library.
+#     venv's package, its bundled library and its compiled call path.
 # Usage: check_wheel.sh PYTHON LIBRARY README
 set -euo pipefail
 python="$1"
@@ -32,6 +33,15 @@ echo "== pip wheel, bundling $library"
 OPX_LIBRARY="$library" "$python" -m pip wheel --quiet --no-deps -w "$work/dist" "$here"
 wheel="$(ls "$work"/dist/octoprox-*.whl)"
 echo "$wheel"
+headers="$("$python" -c 'import os, sysconfig; print(int(os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h"))))')"
+extension=0
+if "$python" -m zipfile -l "$wheel" | grep -q 'octoprox/_fastcall\.'; then
+  extension=1
+fi
+if [ "$headers" != "$extension" ]; then
+  echo "Python.h present: $headers, octoprox/_fastcall in the wheel: $extension"
+  exit 1
+fi
 for leftover in build dist "*.egg-info"; do
   if compgen -G "$here/$leftover" >/dev/null; then
     echo "the build left $here/$leftover behind"
@@ -56,11 +66,16 @@ cd "$work/run"
 run=(env -u OPX_LIBRARY -u LD_LIBRARY_PATH -u PYTHONPATH "$work/venv/bin/python")
 "${run[@]}" -c '
 import os, sys, octoprox
+from octoprox import _calls
 package = os.path.dirname(octoprox.__file__)
 assert package.startswith(sys.argv[1]), "imported " + package
 assert os.path.dirname(octoprox.lib._name) == package, "loaded " + octoprox.lib._name
-print("octoprox", octoprox.__version__, "from", package, "library", octoprox.lib._name)
-' "$work/venv"
+module = _calls.EXTENSION and _calls.EXTENSION.__file__
+if sys.argv[2] == "1":
+    assert module and os.path.dirname(module) == package, "compiled call path: %s" % module
+print("octoprox", octoprox.__version__, "from", package, "library", octoprox.lib._name,
+      "compiled call path", module)
+' "$work/venv" "$extension"
 out="$("${run[@]}" example.py)"
 echo "$out"
 grep -q "collided: True" <<<"$out" || { echo "expected \"collided: True\""; exit 1; }

@@ -9,8 +9,14 @@ The wheel carries liboctoprox when ``$OPX_LIBRARY`` (or the config setting
 absolute path, e.g. ``$PWD/build/src/liboctoprox.so``: it is copied into the package under its SONAME
 (liboctoprox.so.0.MINOR on 0.x, liboctoprox.so.MAJOR from 1.0 on), where the
 package's loader looks first after ``$OPX_LIBRARY``, and the wheel is tagged
-for this platform.  Without it the wheel is pure Python and the package uses
-the system's liboctoprox.
+for this platform.  Without it the package uses the system's liboctoprox.
+
+The wheel also carries octoprox._fastcall, the compiled call path of the
+package's small queries, built for the interpreter running pip
+(octoprox_extension.py: it needs Python.h and a C compiler, and
+``--config-settings extension=no`` leaves it out); the wheel is then tagged
+for that interpreter and platform (e.g. cp311-cp311-linux_x86_64).  Without
+it the package calls the library through ctypes alone.
 """
 import base64
 import ctypes
@@ -20,8 +26,11 @@ import os
 import sys
 import sysconfig
 import tarfile
+import tempfile
 import time
 import zipfile
+
+import octoprox_extension as extension
 
 try:
     import tomllib
@@ -30,7 +39,8 @@ except ImportError:  # Python < 3.11: pyproject.toml asks for tomli there
 
 _ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 _PACKAGE = "octoprox"
-_SDIST_FILES = ("pyproject.toml", "README.md", "backend/octoprox_wheel.py")
+_SDIST_FILES = ("pyproject.toml", "README.md", "backend/octoprox_wheel.py",
+                "backend/octoprox_extension.py")
 
 
 def _project():
@@ -84,12 +94,33 @@ def _platform_tag():
     return sysconfig.get_platform().replace("-", "_").replace(".", "_")
 
 
-def _package_files():
-    """(path in the archive, path on disk) of the package's sources."""
+def _package_files(c_sources=False):
+    """(path in the archive, path on disk) of the package's sources: the
+    Python files, and with ``c_sources`` (the sdist) the C ones."""
     folder = os.path.join(_ROOT, _PACKAGE)
     names = sorted(name for name in os.listdir(folder)
-                   if name.endswith(".py") or name == "py.typed")
+                   if name.endswith(".py") or name == "py.typed" or
+                   (c_sources and name.endswith(".c")))
     return [(_PACKAGE + "/" + name, os.path.join(folder, name)) for name in names]
+
+
+def _tag(library, with_extension):
+    if with_extension:
+        return extension.wheel_tag_prefix() + "-" + _platform_tag()
+    return "py3-none-" + (_platform_tag() if library else "any")
+
+
+def _build_extension(config_settings, scratch):
+    """The compiled octoprox._fastcall in ``scratch``, or None (said why)."""
+    reason = extension.why_not(config_settings)
+    if reason is None:
+        try:
+            return extension.build(_ROOT, scratch)
+        except OSError as error:
+            reason = str(error)
+    print("octoprox build: the wheel has no octoprox._fastcall (%s); the package uses ctypes "
+          "alone" % reason, file=sys.stderr)
+    return None
 
 
 def _zip_time():
@@ -142,7 +173,7 @@ def get_requires_for_build_sdist(config_settings=None):
 
 def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
     project = _project()
-    tag = "py3-none-" + (_platform_tag() if _library(config_settings) else "any")
+    tag = _tag(_library(config_settings), extension.why_not(config_settings) is None)
     dist_info = _dist_name(project) + ".dist-info"
     os.mkdir(os.path.join(metadata_directory, dist_info))
     for name, text in _dist_info_files(project, tag).items():
@@ -154,12 +185,17 @@ def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
 def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     project = _project()
     library = _library(config_settings)
-    tag = "py3-none-" + (_platform_tag() if library else "any")
-    name = "%s-%s.whl" % (_dist_name(project), tag)
-    wheel = _Wheel(os.path.join(wheel_directory, name))
-    for archive_name, path in _package_files():
-        with open(path, "rb") as f:
-            wheel.add(archive_name, f.read())
+    with tempfile.TemporaryDirectory() as scratch:
+        module = _build_extension(config_settings, scratch)
+        tag = _tag(library, module is not None)
+        name = "%s-%s.whl" % (_dist_name(project), tag)
+        wheel = _Wheel(os.path.join(wheel_directory, name))
+        files = _package_files()
+        if module:
+            files.append((extension.archive_name(), module))
+        for archive_name, path in files:
+            with open(path, "rb") as f:
+                wheel.add(archive_name, f.read(), 0o755 if path == module else 0o644)
     if library:
         _check_library_version(library, project["version"])
         with open(library, "rb") as f:
@@ -178,7 +214,7 @@ def build_sdist(sdist_directory, config_settings=None):
     project = _project()
     base = _dist_name(project)
     name = base + ".tar.gz"
-    files = [(path, os.path.join(_ROOT, path)) for path in _SDIST_FILES] + _package_files()
+    files = [(path, os.path.join(_ROOT, path)) for path in _SDIST_FILES] + _package_files(True)
     with tarfile.open(os.path.join(sdist_directory, name), "w:gz", format=tarfile.PAX_FORMAT) as tar:
         for archive_name, path in files:
             tar.add(path, base + "/" + archive_name, recursive=False)

@@ -26,6 +26,9 @@ class Handle:
         # The C pointer, None once closed (the library then gets NULL and
         # refuses it); the finalizer keeps its own reference to free it.
         self._raw = raw
+        # The same pointer as an int, 0 once closed (what octoprox._calls
+        # passes; an int costs nothing to convert).
+        self._address = raw.value or 0
         self._finalizer = weakref.finalize(self, getattr(lib, self._destroy), raw)
 
     @property
@@ -36,6 +39,7 @@ class Handle:
     def close(self) -> None:
         """Frees the C object now.  Closing twice is harmless."""
         self._raw = None
+        self._address = 0
         self._finalizer()
 
     def __enter__(self):

@@ -6,7 +6,8 @@ request is compared first (the usual loop asks the same thing every time;
 Query.collide and distance make that comparison inline), then a small
 dict, so a repeated query builds no ctypes struct and calls no
 opx_x_init.  Keys holding a list or an array (region_min) build a struct
-every time.
+every time.  The last kept request's address, an int, is what the
+compiled call path (octoprox._calls) passes.
 """
 import ctypes
 from typing import Any, Dict, Optional, Sequence, Tuple, Type
@@ -21,9 +22,10 @@ _MAX_KEYS = 64  # distinct keys kept; more (a cutoff varied every call) start ov
 
 
 class RequestCache:
-    """The request structs of one kind of query, by key.  ``key`` and
-    ``request`` are the last ones (read inline by the query methods);
-    ``request`` is a ctypes byref of the struct, ready to pass."""
+    """The request structs of one kind of query, by key.  ``key``,
+    ``request`` and ``address`` are the last ones (read inline by the query
+    methods); ``request`` is a ctypes byref of the struct, ready to pass,
+    ``address`` the struct's address."""
 
     def __init__(self, struct_type: Type[ctypes.Structure], names: Sequence[str], where: str):
         """An empty cache of ``struct_type`` requests whose keys hold the
@@ -32,6 +34,7 @@ class RequestCache:
         self._by_key: Dict[Tuple, Any] = {}
         self.key: Optional[Tuple] = None
         self.request = None
+        self.address = 0
 
     def lookup(self, key: Tuple):
         """The request for ``key``, built when new; it becomes the last."""
@@ -46,6 +49,7 @@ class RequestCache:
                 self._by_key.clear()
             request = self._by_key[key] = ctypes.byref(self.build(key))
         self.key, self.request = key, request
+        self.address = ctypes.addressof(request._obj)
         return request
 
     def build(self, key: Tuple) -> ctypes.Structure:
