@@ -98,7 +98,10 @@ private:
     Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero();
 };
 
-bool by_code(const CellExtent &a, const CellExtent &b) { return a.code < b.code; }
+// A type, not a function, so that the sort inlines it.
+struct ByCode {
+    bool operator()(const CellExtent &a, const CellExtent &b) const { return a.code < b.code; }
+};
 
 // Merges each cell's entries, sorted by code, into one.
 void merge_same_cells(std::vector<CellExtent> &extents) {
@@ -149,7 +152,7 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
         ++counts.used;
     }
     extents.flush();
-    std::sort(rays.hit_extents.begin(), rays.hit_extents.end(), by_code);
+    std::sort(rays.hit_extents.begin(), rays.hit_extents.end(), ByCode());
     merge_same_cells(rays.hit_extents);
 }
 
@@ -188,7 +191,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         append(rays.hit_extents, parts[i].rays.hit_extents);
         // Each part's entries are sorted (and merged) already.
         std::inplace_merge(rays.hit_extents.begin(), rays.hit_extents.begin() + static_cast<std::ptrdiff_t>(before),
-                           rays.hit_extents.end(), by_code);
+                           rays.hit_extents.end(), ByCode());
         rays.box.grow(parts[i].rays.box);
     }
     if (threads > 1) merge_same_cells(rays.hit_extents);
