@@ -1,23 +1,29 @@
 #!/usr/bin/env python3
-"""The per-call time of a tiny collision query from C and from Python.
+"""The per-call time of a tiny collision query from C, Rust and Python.
 
 The scene of the tests: one occupied 25 cm cell and a 10 cm sphere
 touching it; every call answers "collided" after one exact test, so the
 time is the library's fixed cost per query plus the caller's.  Rounds
-interleave the C program (opx-bench-call-overhead, its own process) and
-the Python calls in this process; each figure is the median of the rounds,
-in CPU time of the calling thread (other programs' load on the machine
-counts only through the caches).
-Python is timed two ways: octoprox.Query.collide as users call it, and the
-bare ctypes call of opx_query_collide with everything prepared (what no
-binding built on ctypes can go below).  Rust is not measured: the Rust
-bindings have no benchmark program.
+interleave the C program (opx-bench-call-overhead), the Rust program (the
+safe crate's example call_overhead, each in its own process) and the
+Python calls in this process; each figure is the median of the rounds, in
+CPU time of the calling thread (other programs' load on the machine counts
+only through the caches).
+Python is timed three ways: octoprox.Query.collide as users call it (with
+the compiled call path octoprox._fastcall when the package finds it), the
+same method with ctypes alone (as with OPX_CTYPES_ONLY=1), and the bare
+ctypes call of opx_query_collide with everything prepared (what no binding
+built on ctypes alone can go below).
 
-    python_overhead.py [--quick] [--calls N] [--rounds R] [--c-program PATH] [--json FILE]
+    python_overhead.py [--quick] [--calls N] [--rounds R] [--c-program PATH]
+                       [--rust-program PATH] [--json FILE]
 
-Run from anywhere after a build: the build tree's library and program are
-found through $OPX_BUILD_DIR (default: build/ in the repository).  Prints
-the CPU and a table; exits 77 when numpy or the program is missing.
+Run from anywhere after a build: the build tree's library and programs are
+found through $OPX_BUILD_DIR (default: build/ in the repository); the Rust
+program is built in release by `cmake --build build --target
+opx-bench-call-overhead-rust` (cargo), and is left out with a message when
+absent.  Prints the CPU and a table; exits 77 when numpy or the C program
+is missing.
 """
 import argparse
 import ctypes
@@ -41,6 +47,8 @@ def parse():
     parser.add_argument("--rounds", type=int, default=7, help="rounds (7)")
     parser.add_argument("--c-program", default=os.path.join(
         BUILD, "bench", "call_overhead", "opx-bench-call-overhead"))
+    parser.add_argument("--rust-program", default=os.path.join(
+        BUILD, "bindings", "cargo-target", "release", "examples", "call_overhead"))
     parser.add_argument("--json", help="also write the figures to this file")
     args = parser.parse_args()
     if args.quick:
@@ -80,11 +88,12 @@ def scene(octoprox):
 
 
 class PythonCallers:
-    """The two Python callers on the scene, each a loop timing `calls`
-    calls as a user's loop makes them (ns per call, thread CPU time)."""
+    """The Python callers on the scene, each a loop timing `calls` calls as
+    a user's loop makes them (ns per call, thread CPU time)."""
 
     def __init__(self, octoprox):
-        from octoprox import _library
+        from octoprox import _library, query
+        self.query_module = query
         self.tree, self.links = scene(octoprox)
         self.query = octoprox.Query()
         self.bare = _library.unchecked("opx_query_collide")
@@ -100,6 +109,14 @@ class PythonCallers:
             collide(tree, links)
         return (time.thread_time_ns() - start) / calls
 
+    def python_query_collide_ctypes(self, calls):
+        # The method's ctypes path: what it runs without octoprox._fastcall.
+        cached, self.query_module._collide_cached = self.query_module._collide_cached, None
+        try:
+            return self.python_query_collide(calls)
+        finally:
+            self.query_module._collide_cached = cached
+
     def python_ctypes_call(self, calls):
         bare, result = self.bare, self.result
         query, tree, links = self.query._raw, self.tree._raw, self.links._raw
@@ -109,7 +126,8 @@ class PythonCallers:
         return (time.thread_time_ns() - start) / calls
 
 
-def c_round(program, calls):
+def program_round(program, calls):
+    """One round of the C or Rust program: its ns per call."""
     run = subprocess.run([program, "--calls", str(calls), "--rounds", "1"], capture_output=True,
                          text=True, check=True)
     return float(run.stdout.split()[-1])
@@ -117,28 +135,38 @@ def c_round(program, calls):
 
 def measure(args, octoprox):
     callers = PythonCallers(octoprox)
-    names = ("python_ctypes_call", "python_query_collide")
-    rounds = {name: [] for name in ("c",) + names}
+    programs = {"c": args.c_program}
+    if args.rust_program:
+        programs["rust_query_collide"] = args.rust_program
+    names = ("python_ctypes_call", "python_query_collide", "python_query_collide_ctypes")
+    rounds = {name: [] for name in tuple(programs) + names}
     for name in names:
         getattr(callers, name)(max(1, args.calls // 10))  # warm-up
     for _ in range(args.rounds):
-        rounds["c"].append(c_round(args.c_program, args.calls))
+        for name, program in programs.items():
+            rounds[name].append(program_round(program, args.calls))
         for name in names:
             rounds[name].append(getattr(callers, name)(args.calls))
     return {name: statistics.median(values) for name, values in rounds.items()}
 
 
-def report(figures, args):
+ROWS = [("C, `opx_query_collide`", "c"), ("Rust, `Query::collide`", "rust_query_collide"),
+        ("Python, the bare ctypes call", "python_ctypes_call"),
+        ("Python, `Query.collide`", "python_query_collide"),
+        ("Python, `Query.collide`, ctypes alone", "python_query_collide_ctypes")]
+
+
+def report(figures, args, extension):
     c = figures["c"]
-    rows = [("C, opx_query_collide", "c"), ("Python, the bare ctypes call", "python_ctypes_call"),
-            ("Python, Query.collide", "python_query_collide")]
     print(f"CPU: {cpu_name()}")
     print(f"Python {platform.python_version()}; median of {args.rounds} rounds of "
           f"{args.calls} calls; load average {os.getloadavg()[0]:.2f}")
+    print(f"octoprox._fastcall: {extension or 'not found (Query.collide uses ctypes alone)'}")
     print("| caller | us per call | over C |")
     print("| --- | --- | --- |")
-    for label, key in rows:
-        print(f"| {label} | {figures[key] / 1000:.2f} | {figures[key] / c:.2f}x |")
+    for label, key in ROWS:
+        if key in figures:
+            print(f"| {label} | {figures[key] / 1000:.2f} | {figures[key] / c:.2f}x |")
 
 
 def main():
@@ -151,12 +179,19 @@ def main():
     except ImportError as error:
         print(f"python_overhead: skipped: the octoprox package cannot be imported ({error})")
         return 77
+    if not os.path.exists(args.rust_program):
+        print(f"python_overhead: Rust left out: {args.rust_program} not found (build "
+              "opx-bench-call-overhead-rust)")
+        args.rust_program = None
+    from octoprox import _calls
+    extension = _calls.EXTENSION and _calls.EXTENSION.__file__
     figures = measure(args, octoprox)
-    report(figures, args)
+    report(figures, args, extension)
     if args.json:
         with open(args.json, "w") as f:
             json.dump(dict(figures, cpu=cpu_name(), python=platform.python_version(),
-                           calls=args.calls, rounds=args.rounds, unit="ns per call"), f, indent=1)
+                           python_extension=bool(extension), calls=args.calls,
+                           rounds=args.rounds, unit="ns per call"), f, indent=1)
             f.write("\n")
     return 0
 
