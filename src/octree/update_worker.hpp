@@ -55,10 +55,10 @@ public:
 private:
     void draw_batch();
 
-    // Read on every node an update creates or frees: the initial-exec
-    // model makes that a load instead of a call into the dynamic linker (a
-    // pointer fits the static TLS space every process has, dlopen'd or not).
-    static thread_local UpdateWorker *t_current __attribute__((tls_model("initial-exec")));
+    // Read on every node an update creates or frees: the library is built
+    // with TLS descriptors (-mtls-dialect=gnu2, src/CMakeLists.txt), which
+    // make that read cheap in a library loaded with dlopen too.
+    static thread_local UpdateWorker *t_current;
 
     ChildBlockPool &pool_;
     std::mutex &pool_lock_;
