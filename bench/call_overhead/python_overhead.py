@@ -177,7 +177,10 @@ def main():
     try:
         octoprox = import_octoprox()
     except ImportError as error:
-        print(f"python_overhead: skipped: the octoprox package cannot be imported ({error})")
+        if getattr(error, "name", None) != "numpy":
+            print(f"python_overhead: the octoprox package cannot be imported: {error}")
+            return 1
+        print(f"python_overhead: skipped: numpy is missing ({error})")
         return 77
     if not os.path.exists(args.rust_program):
         print(f"python_overhead: Rust left out: {args.rust_program} not found (build "
