@@ -2,7 +2,8 @@
  * opx_query_collide_spheres: every sphere answers as opx_query_collide
  * answers a link set holding that sphere alone, on random maps (occupied,
  * free and unknown space, pruned leaves), at spheres near surfaces, with
- * both unknown policies, both obstacle models and two thresholds; bad
+ * both unknown policies, both obstacle models and two thresholds, at
+ * spheres whose boxes end on cell faces and at the map's outer faces; bad
  * input is an error naming the argument.
  */
 #include "opx_test.h"
@@ -129,6 +130,42 @@ static void a_point_is_a_sphere_of_radius_zero(void **state) {
     opx_octree_destroy(tree);
 }
 
+/* Occupied cells around the origin and against the map's outer faces
+ * (0.1 m cells: the map ends at +-3276.8 m), and spheres whose boxes end on
+ * cell faces, straddle the origin's planes or reach past the map. */
+static void spheres_on_cell_faces_and_at_the_map_edge(void **state) {
+    const double edge = 3276.8;
+    const double points[][3] = {{0.05, 0.05, 0.05},    {-0.15, 0.25, -0.05}, {0.35, -0.05, 0.15},
+                                {edge - 0.05, 0.05, 0.05}, {-edge + 0.05, -0.05, 0.25}, {0.05, edge - 0.15, -edge + 0.05}};
+    const double radii[] = {0.001, 0.05, 0.1, 0.2, 0.3};
+    opx_octree *tree = new_tree(0.1);
+    opx_query *query = NULL;
+    const opx_insert_options options = sensor_at(0.0, 0.0, 0.0, OPX_INSERT_ENDPOINTS);
+    size_t p, r, collided = 0, checked = 0;
+    int dx, dy;
+    (void)state;
+    insert_f64(tree, &points[0][0], 6, &options);
+    assert_ok(opx_query_create(NULL, &query));
+    for (p = 0; p < 6; ++p)
+        for (r = 0; r < 5; ++r)
+            for (dx = -3; dx <= 3; ++dx)
+                for (dy = -3; dy <= 3; ++dy) {
+                    /* centres on cell faces, edges and centres next to the point */
+                    const double sphere[4] = {points[p][0] + 0.05 * dx, points[p][1] + 0.05 * dy, points[p][2] - 0.05,
+                                              radii[r]};
+                    const opx_sphere_request request = OPX_SPHERE_REQUEST_INIT;
+                    uint8_t got = 2;
+                    assert_ok(opx_query_collide_spheres(query, tree, sphere, 1, 0, &request, &got, 1));
+                    if (got != collides_as_link_set(query, tree, sphere, &request))
+                        fail_msg("sphere (%g %g %g r %g): %d", sphere[0], sphere[1], sphere[2], sphere[3], got);
+                    collided += got;
+                    ++checked;
+                }
+    assert_true(collided > checked / 10 && collided < checked * 9 / 10);
+    opx_query_destroy(query);
+    opx_octree_destroy(tree);
+}
+
 static void bad_input_names_the_argument(void **state) {
     const char *fn = "opx_query_collide_spheres";
     opx_octree *tree = new_sample_map();
@@ -174,6 +211,7 @@ int main(void) {
         cmocka_unit_test(spheres_answer_as_one_sphere_link_sets),
         cmocka_unit_test(strided_rows_and_an_empty_map),
         cmocka_unit_test(a_point_is_a_sphere_of_radius_zero),
+        cmocka_unit_test(spheres_on_cell_faces_and_at_the_map_edge),
         cmocka_unit_test(bad_input_names_the_argument),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
