@@ -138,43 +138,33 @@ void check_frames(const std::vector<Frame> &frames, double resolution, bool star
     }
 }
 
-TEST(FrameUpdateSplit, FramesIntoEmptyAndUsedMaps) {
-    std::mt19937 rng(3);
-    BoundedOcTree probe(0.05);
+// `count` random frames (random_frame) at `resolution`.
+std::vector<Frame> random_frames(unsigned seed, double resolution, int count, int points, float spread) {
+    std::mt19937 rng(seed);
+    const BoundedOcTree probe(resolution);
     std::vector<Frame> frames;
-    for (int i = 0; i < 4; ++i) frames.push_back(random_frame(probe, rng, 300, 1.5f));
-    check_frames(frames, 0.05);
+    for (int i = 0; i < count; ++i) frames.push_back(random_frame(probe, rng, points, spread));
+    return frames;
 }
+
+TEST(FrameUpdateSplit, FramesIntoEmptyAndUsedMaps) { check_frames(random_frames(3, 0.05, 4, 300, 1.5f), 0.05); }
 
 // Repeated frames clamp and prune the free space (pruned leaves above the
 // split keep cells they clamp, and open for the others); new points then
 // expand pruned nodes again.
 TEST(FrameUpdateSplit, ClampedAndPrunedMaps) {
-    std::mt19937 rng(9);
-    BoundedOcTree probe(0.1);
-    std::vector<Frame> frames;
-    const Frame same = random_frame(probe, rng, 200, 1.0f);
-    for (int i = 0; i < 12; ++i) frames.push_back(same);
-    for (int i = 0; i < 3; ++i) frames.push_back(random_frame(probe, rng, 200, 1.0f));
+    const std::vector<Frame> fresh = random_frames(9, 0.1, 4, 200, 1.0f);
+    std::vector<Frame> frames(12, fresh[0]);
+    frames.insert(frames.end(), fresh.begin() + 1, fresh.end());
     check_frames(frames, 0.1);
 }
 
 // Frames into a pruned clamped free region: its leaves above the split
 // keep the free cells they clamp and open for the endpoints.
-TEST(FrameUpdateSplit, PrunedLeavesAboveTheSplit) {
-    std::mt19937 rng(15);
-    BoundedOcTree probe(0.1);
-    std::vector<Frame> frames;
-    for (int i = 0; i < 3; ++i) frames.push_back(random_frame(probe, rng, 200, 1.0f));
-    check_frames(frames, 0.1, true);
-}
+TEST(FrameUpdateSplit, PrunedLeavesAboveTheSplit) { check_frames(random_frames(15, 0.1, 3, 200, 1.0f), 0.1, true); }
 
 // A frame spread over the map's centre, where the root's children part:
 // subtrees on both sides of every axis.
-TEST(FrameUpdateSplit, FrameAcrossTheMapCentre) {
-    std::mt19937 rng(21);
-    BoundedOcTree probe(0.2);
-    check_frames({random_frame(probe, rng, 400, 3.0f)}, 0.2);
-}
+TEST(FrameUpdateSplit, FrameAcrossTheMapCentre) { check_frames(random_frames(21, 0.2, 1, 400, 3.0f), 0.2); }
 
 }  // namespace
