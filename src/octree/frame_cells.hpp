@@ -8,15 +8,40 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace octoprox {
+
+// An allocator whose vectors leave elements they size uninitialised:
+// collect_cells sizes the list, then writes every cell; zeroing the tens
+// of megabytes of a large frame first would cost milliseconds.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = UninitializedAllocator<U>;
+    };
+    UninitializedAllocator() = default;
+    template <class U>
+    UninitializedAllocator(const UninitializedAllocator<U> &) noexcept {}
+    template <class U>
+    void construct(U *at) noexcept {
+        ::new (static_cast<void *>(at)) U;
+    }
+    template <class U, class... Args>
+    void construct(U *at, Args &&...args) {
+        ::new (static_cast<void *>(at)) U(std::forward<Args>(args)...);
+    }
+};
 
 struct FrameCells {
     // Morton codes of finest-cell keys (x in bit 0), ascending, each once;
     // kHitBit set for occupied updates.
     static constexpr uint64_t kHitBit = uint64_t{1} << 63;
-    std::vector<uint64_t> cells;
+    std::vector<uint64_t, UninitializedAllocator<uint64_t>> cells;
     uint64_t hits = 0, misses = 0;
     KeyBox box;  // keys of every cell
 

@@ -5,6 +5,7 @@
 #include "base/error.hpp"
 #include "base/parallel.hpp"
 #include "broadphase/morton.hpp"
+#include "broadphase/radix_sort.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/octree_view.hpp"
 #include "octree/point_slots.hpp"
@@ -14,6 +15,10 @@
 
 namespace octoprox {
 namespace {
+
+// Frames whose box holds more cells than this (a megabyte of marks, the
+// size of a core's L2 cache) walk their rays in the order of their ends.
+constexpr uint64_t kOrderedAboveCells = uint64_t{1} << 23;
 
 bool is_finite(const Vec3 &p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
@@ -156,6 +161,34 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
     merge_same_cells(rays.hit_extents);
 }
 
+// Rays whose ends lie close together cross nearly the same cells on their
+// way from the origin.  Walked one after another they find those cells'
+// marks still in the cache, where rays in the sensor's row order (a row's
+// rays reach across the whole frame) do not once the marks outgrow it.
+// The walk's result does not depend on the order.
+void order_by_end(FrameRays &rays) {
+    const size_t count = rays.ends.size();
+    std::vector<uint64_t> codes(count);
+    std::vector<uint32_t> order(count);
+    for (size_t i = 0; i < count; ++i) {
+        const octomap::OcTreeKey &key = rays.end_keys[i];
+        codes[i] = morton_encode(key[0], key[1], key[2]);
+        order[i] = static_cast<uint32_t>(i);
+    }
+    RadixScratch scratch;
+    RadixSortOptions options;
+    options.key_bits = 48;
+    radix_sort(codes, order, scratch, options);
+    std::vector<octomap::point3d> ends(count);
+    std::vector<octomap::OcTreeKey> end_keys(count);
+    for (size_t i = 0; i < count; ++i) {
+        ends[i] = rays.ends[order[i]];
+        end_keys[i] = rays.end_keys[order[i]];
+    }
+    rays.ends = std::move(ends);
+    rays.end_keys = std::move(end_keys);
+}
+
 template <class T>
 void append(std::vector<T> &to, const std::vector<T> &from) {
     to.insert(to.end(), from.begin(), from.end());
@@ -195,6 +228,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         rays.box.grow(parts[i].rays.box);
     }
     if (threads > 1) merge_same_cells(rays.hit_extents);
+    if (settings.raycast && rays.box.volume() > kOrderedAboveCells) order_by_end(rays);
     for (const RayPart &part : parts) {
         counts.used += part.counts.used;
         counts.nonfinite += part.counts.nonfinite;

@@ -15,7 +15,9 @@ namespace octoprox {
 // cells' paths that has no children yet, or does not exist yet, counted
 // once per node.  Exact for OctoMap's updateNode, which creates children
 // within an existing block and expands a pruned node into one block.
-size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &cells);
+// Counted in `threads` runs of the cells on as many threads (the same
+// count whatever the number).
+size_t child_blocks_needed(const BoundedOcTree &tree, const FrameCells &cells, size_t threads = 1);
 
 // Makes sure the tree's pool can hand out that many blocks without a heap
 // allocation, and the batches an update on `threads` threads draws ahead

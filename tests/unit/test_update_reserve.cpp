@@ -1,7 +1,8 @@
 // reserve_update (update_reserve.cpp): after it, a frame's cell updates
 // (apply_frame_cells) take every child block from the pool without growing it, whatever the
 // map held before (empty, earlier frames, pruned and clamped regions), so
-// an update can only run out of memory before its first cell changes.
+// an update can only run out of memory before its first cell changes; the
+// count is the same on any number of threads.
 #include "broadphase/morton.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/frame_update.hpp"
@@ -52,6 +53,8 @@ octoprox::FrameCells cells_of(const Frame &frame) {
 void apply_reserved(BoundedOcTree &tree, const Frame &frame) {
     const octoprox::FrameCells cells = cells_of(frame);
     const size_t needed = octoprox::child_blocks_needed(tree, cells);
+    for (const size_t threads : {2, 3, 7})
+        EXPECT_EQ(octoprox::child_blocks_needed(tree, cells, threads), needed) << threads << " threads";
     octoprox::reserve_update(tree, cells);
     const size_t slab_bytes = tree.child_blocks().bytes_reserved();
     const size_t in_use = tree.child_blocks().blocks_in_use();
