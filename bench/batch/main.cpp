@@ -7,15 +7,9 @@
 // call).
 //   opx-bench-batch [--quick] [--json FILE] [--configurations N]
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <string>
 
 #include "batch_run.hpp"
-#include "pr2_scene.hpp"
-#include "report.hpp"
-#include "batch_report.hpp"
+#include "bench_main.hpp"
 
 namespace batch_bench {
 namespace {
@@ -31,71 +25,19 @@ void print_usage(FILE *out) {
                  "exits 77 without them.\n");
 }
 
-bool parse_options(int argc, char **argv, RunOptions &options, std::string &json_path) {
-    bool counted = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool has_value = i + 1 < argc;
-        if (arg == "--quick") {
-            options.quick = true;
-        } else if (arg == "--json" && has_value) {
-            json_path = argv[++i];
-        } else if (arg == "--configurations" && has_value) {
-            const long n = std::strtol(argv[++i], nullptr, 10);
-            if (n < 10 || n > 1000000) return false;
-            options.configurations = static_cast<size_t>(n);
-            counted = true;
-        } else {
-            std::fprintf(stderr, "opx-bench-batch: bad argument '%s'\n", arg.c_str());
-            return false;
-        }
-    }
-    if (options.quick) {
-        if (!counted) options.configurations = 100;
-        options.rounds = 1;
-    }
-    return true;
-}
-
-int run(int argc, char **argv) {
-    RunOptions options;
-    std::string json_path;
-    if (!parse_options(argc, argv, options, json_path)) {
-        print_usage(stderr);
-        return 2;
-    }
-    const std::string missing = paper_tables::missing_pr2_data();
-    if (!missing.empty()) {
-        std::printf("opx-bench-batch: skipped: %s not found (set OPX_DATA_DIR to the shared data folder)\n",
-                    missing.c_str());
-        return 77;
-    }
-    const std::string cpu = paper_tables::cpu_name(), load = paper_tables::load_average();
-    std::printf("opx-bench-batch (OctoProx %s)\nCPU: %s\nload average at start: %s\n", opx_version(), cpu.c_str(),
-                load.c_str());
-    const RunResult result = run_all(options);
-    print_rows(result.rows);
-    std::printf("load average at end: %s\n", paper_tables::load_average().c_str());
-    if (!json_path.empty() && !write_rows_json(json_path, result.rows, cpu, load)) {
-        std::fprintf(stderr, "opx-bench-batch: cannot write %s\n", json_path.c_str());
-        return 1;
-    }
-    if (!result.agree) std::printf("FAIL: the batch call and the single calls disagree (see MISMATCH above)\n");
-    return result.agree ? 0 : 1;
-}
-
 }  // namespace
 }  // namespace batch_bench
 
 int main(int argc, char **argv) {
-    if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-        batch_bench::print_usage(stdout);
-        return 0;
-    }
-    try {
-        return batch_bench::run(argc, argv);
-    } catch (const std::exception &error) {
-        std::fprintf(stderr, "opx-bench-batch: %s\n", error.what());
-        return 1;
-    }
+    const batch_bench::RunOptions defaults;
+    const batch_bench::BenchProgram program{"opx-bench-batch", false, batch_bench::print_usage,
+                                            "the batch call and the single calls disagree (see MISMATCH above)"};
+    return batch_bench::bench_main(program, argc, argv, {defaults.quick, defaults.configurations, defaults.rounds},
+                                   [](const batch_bench::BenchOptions &given) {
+                                       batch_bench::RunOptions options;
+                                       options.quick = given.quick, options.configurations = given.configurations,
+                                       options.rounds = given.rounds;
+                                       const batch_bench::RunResult result = batch_bench::run_all(options);
+                                       return batch_bench::BenchOutcome{result.rows, result.agree};
+                                   });
 }

@@ -7,13 +7,8 @@
 // configuration, pose updates and queries apart.
 //   opx-bench-world [--quick] [--json FILE] [--configurations N] [--rounds N]
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <string>
 
-#include "pr2_scene.hpp"
-#include "report.hpp"
+#include "bench_main.hpp"
 #include "world_run.hpp"
 
 namespace world_bench {
@@ -32,79 +27,20 @@ void print_usage(FILE *out) {
                  "exits 77 without them.\n");
 }
 
-bool parse_count(const char *text, long low, long high, long &out) {
-    char *end = nullptr;
-    out = std::strtol(text, &end, 10);
-    return end != text && *end == '\0' && out >= low && out <= high;
-}
-
-bool parse_options(int argc, char **argv, RunOptions &options, std::string &json_path) {
-    bool counted = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool has_value = i + 1 < argc;
-        long n = 0;
-        if (arg == "--quick") {
-            options.quick = true;
-        } else if (arg == "--json" && has_value) {
-            json_path = argv[++i];
-        } else if (arg == "--configurations" && has_value && parse_count(argv[++i], 10, 1000000, n)) {
-            options.configurations = static_cast<size_t>(n);
-            counted = true;
-        } else if (arg == "--rounds" && has_value && parse_count(argv[++i], 1, 100, n)) {
-            options.rounds = static_cast<int>(n);
-        } else {
-            std::fprintf(stderr, "opx-bench-world: bad argument '%s'\n", arg.c_str());
-            return false;
-        }
-    }
-    if (options.quick) {
-        if (!counted) options.configurations = 100;
-        options.rounds = 1;
-    }
-    return true;
-}
-
-int run(int argc, char **argv) {
-    RunOptions options;
-    std::string json_path;
-    if (!parse_options(argc, argv, options, json_path)) {
-        print_usage(stderr);
-        return 2;
-    }
-    const std::string missing = paper_tables::missing_pr2_data();
-    if (!missing.empty()) {
-        std::printf("opx-bench-world: skipped: %s not found (set OPX_DATA_DIR to the shared data folder)\n",
-                    missing.c_str());
-        return 77;
-    }
-    const std::string cpu = paper_tables::cpu_name(), load = paper_tables::load_average();
-    std::printf("opx-bench-world (OctoProx %s)\nCPU: %s\nload average at start: %s\n", opx_version(), cpu.c_str(),
-                load.c_str());
-    const RunResult result = run_all(options);
-    batch_bench::print_rows(result.rows);
-    std::printf("load average at end: %s\n", paper_tables::load_average().c_str());
-    if (!json_path.empty() && !batch_bench::write_rows_json(json_path, result.rows, cpu, load)) {
-        std::fprintf(stderr, "opx-bench-world: cannot write %s\n", json_path.c_str());
-        return 1;
-    }
-    if (!result.composition_agrees)
-        std::printf("FAIL: with the map and the objects, some answer is not the union of the two alone (MISMATCH above)\n");
-    return result.composition_agrees ? 0 : 1;
-}
-
 }  // namespace
 }  // namespace world_bench
 
 int main(int argc, char **argv) {
-    if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-        world_bench::print_usage(stdout);
-        return 0;
-    }
-    try {
-        return world_bench::run(argc, argv);
-    } catch (const std::exception &error) {
-        std::fprintf(stderr, "opx-bench-world: %s\n", error.what());
-        return 1;
-    }
+    const world_bench::RunOptions defaults;
+    const batch_bench::BenchProgram program{
+        "opx-bench-world", true, world_bench::print_usage,
+        "with the map and the objects, some answer is not the union of the two alone (MISMATCH above)"};
+    return batch_bench::bench_main(
+        program, argc, argv, {defaults.quick, defaults.configurations, defaults.rounds},
+        [&](const batch_bench::BenchOptions &given) {
+            world_bench::RunOptions options = defaults;
+            options.quick = given.quick, options.configurations = given.configurations, options.rounds = given.rounds;
+            const world_bench::RunResult result = world_bench::run_all(options);
+            return batch_bench::BenchOutcome{result.rows, result.composition_agrees};
+        });
 }
