@@ -31,6 +31,14 @@ class Handle:
         self._address = raw.value or 0
         self._finalizer = weakref.finalize(self, getattr(lib, self._destroy), raw)
 
+    @classmethod
+    def _from(cls, create):
+        """An object of this class around the C object ``create(out)``
+        makes (a copy, a file read), bypassing the class's own __init__."""
+        handle = cls.__new__(cls)
+        Handle.__init__(handle, create)
+        return handle
+
     @property
     def closed(self) -> bool:
         """True once close() ran (or the ``with`` block ended)."""

@@ -99,12 +99,6 @@ class LinkSet(Handle, RobotModel):
         """An empty link set: add links with add_link, shapes with add_sphere..."""
         super().__init__(lib.opx_linkset_create)
 
-    @classmethod
-    def _from(cls, create):
-        links = cls.__new__(cls)
-        Handle.__init__(links, create)
-        return links
-
     @api("LinkSet.clone")
     def clone(self) -> LinkSet:
         """A deep copy (shapes, names, poses, paddings, enabled flags,

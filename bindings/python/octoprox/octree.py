@@ -89,12 +89,6 @@ class Octree(Handle):
         super().__init__(lambda out: lib.opx_octree_create(ctypes.byref(opts), out))
 
     @classmethod
-    def _wrap(cls, create):
-        tree = cls.__new__(cls)
-        Handle.__init__(tree, create)
-        return tree
-
-    @classmethod
     @api("Octree.load")
     def load(cls, path: PathLike, *, prob_hit: float = 0.7, prob_miss: float = 0.4,
              clamp_min: float = 0.1192, clamp_max: float = 0.971,
@@ -107,7 +101,7 @@ class Octree(Handle):
         opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
                            clamp_min=clamp_min, clamp_max=clamp_max,
                            occupied_threshold=occupied_threshold, free_threshold=free_threshold)
-        return cls._wrap(lambda out: lib.opx_octree_load_file(_path(path), opts, out))
+        return cls._from(lambda out: lib.opx_octree_load_file(_path(path), opts, out))
 
     @classmethod
     @api("Octree.from_bytes")
@@ -120,7 +114,7 @@ class Octree(Handle):
         opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
                            clamp_min=clamp_min, clamp_max=clamp_max,
                            occupied_threshold=occupied_threshold, free_threshold=free_threshold)
-        return cls._wrap(lambda out: lib.opx_octree_load_memory(data, len(data), opts, out))
+        return cls._from(lambda out: lib.opx_octree_load_memory(data, len(data), opts, out))
 
     @classmethod
     @api("Octree.from_message")
@@ -136,7 +130,7 @@ class Octree(Handle):
         opts = init_struct(s.OctreeOptions, prob_hit=prob_hit, prob_miss=prob_miss,
                            clamp_min=clamp_min, clamp_max=clamp_max,
                            occupied_threshold=occupied_threshold, free_threshold=free_threshold)
-        return cls._wrap(lambda out: lib.opx_octree_load_message(
+        return cls._from(lambda out: lib.opx_octree_load_message(
             data, len(data), int(bool(binary)), resolution, opts, out))
 
     def __reduce__(self):

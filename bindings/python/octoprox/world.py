@@ -61,12 +61,6 @@ class World(Handle):
         super().__init__(lib.opx_world_create)
 
     @classmethod
-    def _from(cls, create) -> World:
-        world = cls.__new__(cls)
-        Handle.__init__(world, create)
-        return world
-
-    @classmethod
     @api("World.from_scene_file")
     def from_scene_file(cls, path: PathLike) -> World:
         """The objects of a MoveIt planning scene file, by its extension:
