@@ -8,13 +8,14 @@
 #include <sstream>
 
 namespace oracle {
-namespace {
 
-void check(opx_status status, const char *what) {
+void require_ok(opx_status status, const char *what) {
     if (status == OPX_OK) return;
     std::fprintf(stderr, "FAIL: %s: %s (%s)\n", what, opx_status_name(status), opx_last_error());
     std::exit(1);
 }
+
+namespace {
 
 // The vertices as the library receives them: packed, or 4 doubles apart.
 std::vector<double> vertex_buffer(const ShapeSpec &spec, bool strided) {
@@ -131,16 +132,16 @@ double mesh_cell_distance(const std::vector<Triangle> &triangles, const Cell &ce
 
 opx_linkset *build_linkset(const RobotSpec &robot) {
     opx_linkset *links = nullptr;
-    check(opx_linkset_create(&links), "opx_linkset_create");
+    require_ok(opx_linkset_create(&links), "opx_linkset_create");
     unsigned shapes = 0;
     for (const LinkSpec &link : robot.links) {
         uint32_t index = 0;
-        check(opx_linkset_add_link(links, link.name.c_str(), &index), "opx_linkset_add_link");
+        require_ok(opx_linkset_add_link(links, link.name.c_str(), &index), "opx_linkset_add_link");
         for (const ShapeSpec &spec : link.shapes) {
             const bool strided = ++shapes % 2 == 0;
             const std::vector<double> vertices = vertex_buffer(spec, strided);
             const opx_shape shape = library_shape(spec, vertices, strided);
-            check(opx_linkset_add_shape(links, index, &shape, nullptr), "opx_linkset_add_shape");
+            require_ok(opx_linkset_add_shape(links, index, &shape, nullptr), "opx_linkset_add_shape");
         }
     }
     update_linkset(links, robot);
@@ -160,14 +161,14 @@ void update_linkset(opx_linkset *links, const RobotSpec &robot, unsigned variant
     std::vector<opx_pose> packed;
     for (const PaddedPose &p : poses) packed.push_back(p.pose);
     const opx_pose *first = strided ? &poses.front().pose : packed.data();
-    if (variant & 1u) check(opx_linkset_set_poses(links, first, poses.size(), stride), "opx_linkset_set_poses");
+    if (variant & 1u) require_ok(opx_linkset_set_poses(links, first, poses.size(), stride), "opx_linkset_set_poses");
     for (uint32_t i = 0; i < robot.links.size(); ++i) {
         const LinkSpec &link = robot.links[i];
-        check(opx_linkset_set_link_padding(links, i, link.padding), "opx_linkset_set_link_padding");
-        check(opx_linkset_set_link_enabled(links, i, link.enabled ? 1 : 0), "opx_linkset_set_link_enabled");
+        require_ok(opx_linkset_set_link_padding(links, i, link.padding), "opx_linkset_set_link_padding");
+        require_ok(opx_linkset_set_link_enabled(links, i, link.enabled ? 1 : 0), "opx_linkset_set_link_enabled");
     }
-    check(opx_linkset_set_padding(links, robot.global_padding), "opx_linkset_set_padding");
-    if (!(variant & 1u)) check(opx_linkset_set_poses(links, first, poses.size(), stride), "opx_linkset_set_poses");
+    require_ok(opx_linkset_set_padding(links, robot.global_padding), "opx_linkset_set_padding");
+    if (!(variant & 1u)) require_ok(opx_linkset_set_poses(links, first, poses.size(), stride), "opx_linkset_set_poses");
 }
 
 Eigen::Isometry3d isometry_of(const opx_pose &pose) {

@@ -16,6 +16,11 @@
 
 namespace oracle {
 
+// Prints what failed and the library's message, and exits 1, unless OPX_OK:
+// for library calls that set up a test (an answer under test is compared,
+// not required).
+void require_ok(opx_status status, const char *what);
+
 // The library's touch rule: a shape touches a cell when their distance is
 // <= inflation + kTouchTolerance (closed sets, see query.h).
 constexpr double kTouchTolerance = 1e-9;

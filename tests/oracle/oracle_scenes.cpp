@@ -9,18 +9,12 @@
 namespace oracle {
 namespace {
 
-void check(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    std::fprintf(stderr, "FAIL: %s: %s (%s)\n", what, opx_status_name(status), opx_last_error());
-    std::exit(1);
-}
-
 opx_octree *create_octree(double resolution, double free_threshold) {
     opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
     options.resolution = resolution;
     options.free_threshold = free_threshold;
     opx_octree *tree = nullptr;
-    check(opx_octree_create(&options, &tree), "opx_octree_create");
+    require_ok(opx_octree_create(&options, &tree), "opx_octree_create");
     return tree;
 }
 
@@ -65,7 +59,7 @@ void insert_frame(opx_octree *tree, const std::vector<Vec3> &world_points, const
     opx_insert_options options = OPX_INSERT_OPTIONS_INIT;
     options.mode = mode;
     options.sensor_pose = sensor;
-    check(opx_octree_insert_points(tree, local.data(), local.size(), 0, OPX_SCALAR_FLOAT64, &options, nullptr),
+    require_ok(opx_octree_insert_points(tree, local.data(), local.size(), 0, OPX_SCALAR_FLOAT64, &options, nullptr),
           "opx_octree_insert_points");
 }
 
@@ -117,7 +111,7 @@ std::unique_ptr<Scene> synthetic_scene(Rng &rng) {
     scene->label = "synthetic scene";
     index_scene(*scene, false);
     opx_octree_stats stats = OPX_OCTREE_STATS_INIT;
-    check(opx_octree_get_stats(scene->tree, &stats), "opx_octree_get_stats");
+    require_ok(opx_octree_get_stats(scene->tree, &stats), "opx_octree_get_stats");
     if (stats.leaves_occupied != kOccupiedLeaves) {
         std::printf("FAIL: the synthetic scene has %llu occupied leaves, not %zu\n",
                     (unsigned long long)stats.leaves_occupied, kOccupiedLeaves);

@@ -57,6 +57,18 @@ SelfChecker::Answer SelfChecker::collide(opx_query *query, const opx_linkset *li
     return answer;
 }
 
+PairMask random_pairs(Rng &rng, opx_linkset *links, size_t count, double disabled) {
+    PairMask mask(count);
+    for (uint32_t a = 0; a < count; ++a) {
+        for (uint32_t b = a + 1; b < count; ++b) {
+            const bool enabled = !rng.chance(disabled);
+            mask.set(a, b, enabled);
+            require_ok(opx_linkset_set_pair_enabled(links, a, b, enabled ? 1 : 0), "opx_linkset_set_pair_enabled");
+        }
+    }
+    return mask;
+}
+
 bool SelfChecker::check(opx_query *query, const opx_linkset *links, const SelfCase &c) {
     const uint64_t before = mismatches_;
     ++states_;

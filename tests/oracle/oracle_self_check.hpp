@@ -4,6 +4,7 @@
 // compared with oracle_self's brute-force answers.
 #pragma once
 
+#include "oracle_random.hpp"
 #include "oracle_self.hpp"
 
 #include <octoprox/octoprox.h>
@@ -13,6 +14,10 @@
 #include <vector>
 
 namespace oracle {
+
+// Pairs of `count` links enabled at random (each disabled with probability
+// `disabled`), the same in the oracle's mask and in the library's link set.
+PairMask random_pairs(Rng &rng, opx_linkset *links, size_t count, double disabled);
 
 struct SelfCase {
     const std::vector<PlacedShape> *placed = nullptr;

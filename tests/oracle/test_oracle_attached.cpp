@@ -17,7 +17,7 @@
 #include "oracle_check.hpp"
 #include "oracle_random.hpp"
 #include "oracle_scenes.hpp"
-#include "oracle_self.hpp"
+#include "oracle_self_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,12 +31,6 @@
 using namespace oracle;
 
 namespace {
-
-void require_ok(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    std::printf("FAIL: %s: %s\n", what, opx_last_error());
-    std::exit(1);
-}
 
 struct AttachedSpec {
     uint32_t link = 0;
@@ -116,18 +110,6 @@ PairMask body_pairs(const PairMask &link_pairs, const std::vector<AttachedSpec> 
             mask.set(n + i, l, l != o.link && !touch);
         }
         for (uint32_t j = i + 1; j < objects.size(); ++j) mask.set(n + i, n + j, o.link != objects[j].link);
-    }
-    return mask;
-}
-
-PairMask random_link_pairs(Rng &rng, opx_linkset *links, size_t count) {
-    PairMask mask(count);
-    for (uint32_t a = 0; a < count; ++a) {
-        for (uint32_t b = a + 1; b < count; ++b) {
-            const bool enabled = !rng.chance(0.2);
-            mask.set(a, b, enabled);
-            require_ok(opx_linkset_set_pair_enabled(links, a, b, enabled ? 1 : 0), "opx_linkset_set_pair_enabled");
-        }
     }
     return mask;
 }
@@ -217,7 +199,7 @@ int run_self(uint64_t seed) {
         RobotSpec robot = random_robot(rng, options);
         opx_linkset *links = build_linkset(robot);
         const uint32_t n = static_cast<uint32_t>(robot.links.size());
-        const PairMask link_pairs = random_link_pairs(rng, links, n);
+        const PairMask link_pairs = random_pairs(rng, links, n, 0.2);
         const std::vector<AttachedSpec> objects = random_attached(rng, robot);
         attach_all(links, robot, objects);
         const PairMask mask = body_pairs(link_pairs, objects);

@@ -23,12 +23,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void require_ok(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    std::printf("FAIL: %s: %s\n", what, opx_last_error());
-    std::exit(1);
-}
-
 // ---- generated arms --------------------------------------------------------
 
 struct Arm {
@@ -67,19 +61,6 @@ void pose_arm(Rng &rng, Arm &arm) {
     }
 }
 
-// About one pair in ten disabled, in the oracle's mask and the library.
-PairMask random_pairs(Rng &rng, opx_linkset *links, size_t count) {
-    PairMask mask(count);
-    for (uint32_t a = 0; a < count; ++a) {
-        for (uint32_t b = a + 1; b < count; ++b) {
-            const bool enabled = !rng.chance(0.1);
-            mask.set(a, b, enabled);
-            require_ok(opx_linkset_set_pair_enabled(links, a, b, enabled ? 1 : 0), "opx_linkset_set_pair_enabled");
-        }
-    }
-    return mask;
-}
-
 int run_arms(uint64_t seed) {
     const int arms = static_cast<int>(env_number("OPX_ORACLE_ROBOTS", 30));
     constexpr int kConfigurations = 40;
@@ -91,7 +72,7 @@ int run_arms(uint64_t seed) {
         Arm arm = random_arm(rng);
         pose_arm(rng, arm);
         opx_linkset *links = build_linkset(arm.robot);
-        const PairMask pairs = random_pairs(rng, links, arm.robot.links.size());
+        const PairMask pairs = random_pairs(rng, links, arm.robot.links.size(), 0.1);
         for (int k = 0; k < kConfigurations; ++k) {
             pose_arm(rng, arm);
             update_linkset(links, arm.robot, static_cast<unsigned>(k));

@@ -17,12 +17,6 @@ using namespace oracle;
 
 namespace {
 
-void require_ok(opx_status status, const char *what) {
-    if (status == OPX_OK) return;
-    std::printf("FAIL: %s: %s\n", what, opx_last_error());
-    std::exit(1);
-}
-
 // An object as the oracle describes it: a LinkSpec (padding 0).
 LinkSpec random_object(Rng &rng, int index, const Vec3 &low, const Vec3 &high) {
     LinkSpec object;
