@@ -8,29 +8,12 @@
 #define _POSIX_C_SOURCE 200809L /* stat */
 
 #include "opx_batch_test.h"
+#include "opx_data_test.h"
 #include "opx_joints_test.h"
-
-#include <sys/stat.h>
 
 #define PR2_ROWS 24
 
 static char g_urdf[4096], g_srdf[4096], g_package[4096];
-
-static const char *data_dir(void) {
-    const char *env = getenv("OPX_DATA_DIR");
-    return env != NULL && env[0] != '\0' ? env : OPX_DEFAULT_DATA_DIR;
-}
-
-/* Fills path with data_dir()/relative, or skips the whole test (77). */
-static void require_data_file(const char *relative, char *path, size_t size) {
-    struct stat info;
-    snprintf(path, size, "%s/%s", data_dir(), relative);
-    if (stat(path, &info) != 0) {
-        printf("SKIP: %s not found, set OPX_DATA_DIR to the shared data folder\n", path);
-        fflush(stdout);
-        exit(77);
-    }
-}
 
 static opx_linkset *load_pr2(void) {
     const char *dirs[1] = {g_package};

@@ -3,6 +3,7 @@
  * written here. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "opx_data_test.h"
 #include "pcd_reader.h"
 
 #include <math.h>
@@ -12,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -21,22 +21,6 @@
 
 static char g_binary_path[4096];
 static char g_compressed_path[4096];
-
-static const char *data_dir(void) {
-    const char *env = getenv("OPX_DATA_DIR");
-    return env != NULL && env[0] != '\0' ? env : OPX_DEFAULT_DATA_DIR;
-}
-
-/* Fills path with data_dir()/relative, or skips the whole test (77). */
-static void require_data_file(const char *relative, char *path, size_t size) {
-    struct stat info;
-    snprintf(path, size, "%s/%s", data_dir(), relative);
-    if (stat(path, &info) != 0) {
-        printf("SKIP: %s not found, set OPX_DATA_DIR to the shared data folder\n", path);
-        fflush(stdout);
-        exit(77);
-    }
-}
 
 static void assert_near(double value, double expected, double tolerance) {
     if (fabs(value - expected) > tolerance) fail_msg("%.6f is not %.6f +- %g", value, expected, tolerance);
