@@ -160,6 +160,16 @@ static inline void assert_same_leaves(const opx_leaf *a, size_t count_a, const o
     if (count_a > 0) assert_memory_equal(a, b, count_a * sizeof *a);
 }
 
+/* Both maps hold the same known leaves, bit for bit. */
+static inline void assert_same_known_leaves(const opx_octree *got, const opx_octree *want) {
+    size_t n = 0, m = 0;
+    opx_leaf *got_leaves = all_leaves(got, OPX_MASK_ALL_KNOWN, &n);
+    opx_leaf *want_leaves = all_leaves(want, OPX_MASK_ALL_KNOWN, &m);
+    assert_same_leaves(got_leaves, n, want_leaves, m);
+    free(got_leaves);
+    free(want_leaves);
+}
+
 /* The map has the same stats (memory included) and leaves as before. */
 static inline void assert_unchanged(const opx_octree *tree, map_snapshot *before) {
     map_snapshot now = take_snapshot(tree);

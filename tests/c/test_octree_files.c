@@ -87,12 +87,7 @@ static void ot_file_keeps_probabilities(void **state) {
     assert_ok(opx_octree_save_file(tree, path, OPX_FORMAT_AUTO));
     opx_octree *loaded = NULL;
     assert_ok(opx_octree_load_file(path, NULL, &loaded));
-    size_t n = 0, m = 0;
-    opx_leaf *got = all_leaves(loaded, OPX_MASK_ALL_KNOWN, &n);
-    opx_leaf *want = all_leaves(tree, OPX_MASK_ALL_KNOWN, &m);
-    assert_same_leaves(got, n, want, m);
-    free(got);
-    free(want);
+    assert_same_known_leaves(loaded, tree);
     opx_octree_destroy(loaded);
     opx_octree_destroy(tree);
     remove(path);
@@ -115,12 +110,7 @@ static void opx_file_keeps_point_extents(void **state) {
     assert_ok(opx_octree_get_stats(from_ot, &ot));
     assert_int_equal(opx.leaves_with_extent, before.leaves_with_extent);
     assert_int_equal(ot.leaves_with_extent, 0);
-    size_t n = 0, m = 0;
-    opx_leaf *got = all_leaves(from_opx, OPX_MASK_ALL_KNOWN, &n);
-    opx_leaf *want = all_leaves(tree, OPX_MASK_ALL_KNOWN, &m);
-    assert_same_leaves(got, n, want, m);
-    free(got);
-    free(want);
+    assert_same_known_leaves(from_opx, tree);
     opx_octree_destroy(from_opx);
     opx_octree_destroy(from_ot);
     opx_octree_destroy(tree);
