@@ -16,18 +16,7 @@ const ACTIVE: usize = 8; // j1..j7, finger_l
 const JOINTS: usize = 10; // and finger_r (mimic), tool (fixed)
 
 fn gripper_arm() -> LinkSet {
-    let mut xml = String::from("<robot name=\"arm\">");
-    for k in 0..8 {
-        write!(xml, "<link name=\"l{k}\"><collision><origin xyz=\"0 0 0.12\"/><geometry>\
-                     <cylinder radius=\"0.035\" length=\"0.16\"/></geometry></collision></link>").unwrap();
-        if k > 0 {
-            let axis = if k % 2 == 1 { "0 0 1" } else { "0 1 0" };
-            let z = if k == 1 { 0.1 } else { 0.24 };
-            write!(xml, "<joint name=\"j{k}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{k}\"/>\
-                         <origin xyz=\"0 0 {z}\"/><axis xyz=\"{axis}\"/>\
-                         <limit lower=\"-3.14\" upper=\"3.14\" effort=\"1\" velocity=\"1\"/></joint>", k - 1).unwrap();
-        }
-    }
+    let mut xml = arm_urdf_links(7);
     for name in ["finger_l", "finger_r", "tool"] {
         write!(xml, "<link name=\"{name}\"><collision><geometry><box size=\"0.02 0.02 0.06\"/>\
                      </geometry></collision></link>").unwrap();
@@ -40,16 +29,6 @@ fn gripper_arm() -> LinkSet {
                  <joint name=\"tool\" type=\"fixed\"><parent link=\"l7\"/><child link=\"tool\"/>\
                  <origin xyz=\"0 0 0.33\"/></joint></robot>").unwrap();
     LinkSet::from_urdf_string(&xml, &UrdfOptions::default()).unwrap()
-}
-
-/// A reproducible uniform generator (64-bit LCG).
-struct Lcg(u64);
-
-impl Lcg {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
-    }
 }
 
 /// `rows` active vectors of the arm, packed.

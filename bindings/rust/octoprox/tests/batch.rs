@@ -13,32 +13,8 @@ const JOINTS: usize = 7;
 /// Links l0..l7, each a cylinder from 0.04 to 0.2 m along its z, joints
 /// alternating z and y axes 0.24 m apart.
 fn arm() -> LinkSet {
-    use std::fmt::Write;
-    let mut xml = String::from("<robot name=\"arm\">");
-    for k in 0..=JOINTS {
-        write!(xml, "<link name=\"l{k}\"><collision><origin xyz=\"0 0 0.12\"/><geometry>\
-                         <cylinder radius=\"0.035\" length=\"0.16\"/></geometry></collision></link>").unwrap();
-        if k > 0 {
-            let axis = if k % 2 == 1 { "0 0 1" } else { "0 1 0" };
-            let z = if k == 1 { 0.1 } else { 0.24 };
-            write!(xml, "<joint name=\"j{k}\" type=\"revolute\"><parent link=\"l{}\"/>\
-                             <child link=\"l{k}\"/><origin xyz=\"0 0 {z}\"/><axis xyz=\"{axis}\"/>\
-                             <limit lower=\"-3.14\" upper=\"3.14\" effort=\"1\" velocity=\"1\"/></joint>",
-                   k - 1).unwrap();
-        }
-    }
-    xml += "</robot>";
+    let xml = arm_urdf_links(JOINTS) + "</robot>";
     LinkSet::from_urdf_string(&xml, &UrdfOptions::default()).unwrap()
-}
-
-/// A reproducible uniform generator (64-bit LCG).
-struct Lcg(u64);
-
-impl Lcg {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
-    }
 }
 
 fn scatter_map() -> Octree {

@@ -32,3 +32,34 @@ pub fn sphere_at(radius: f64, x: f64, y: f64, z: f64) -> LinkSet {
     links.set_poses(&[pose_at(x, y, z)]).unwrap();
     links
 }
+
+/// A reproducible uniform generator (64-bit LCG).
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
+    }
+}
+
+/// The opening of a generated arm's URDF: links l0..l`joints`, each a
+/// cylinder from 0.04 to 0.2 m along its z, and revolute joints j1..
+/// alternating z and y axes 0.24 m apart (the first 0.1 m up).  The caller
+/// adds what else it needs and "</robot>".
+pub fn arm_urdf_links(joints: usize) -> String {
+    use std::fmt::Write;
+    let mut xml = String::from("<robot name=\"arm\">");
+    for k in 0..=joints {
+        write!(xml, "<link name=\"l{k}\"><collision><origin xyz=\"0 0 0.12\"/><geometry>\
+                     <cylinder radius=\"0.035\" length=\"0.16\"/></geometry></collision></link>").unwrap();
+        if k > 0 {
+            let axis = if k % 2 == 1 { "0 0 1" } else { "0 1 0" };
+            let z = if k == 1 { 0.1 } else { 0.24 };
+            write!(xml, "<joint name=\"j{k}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{k}\"/>\
+                         <origin xyz=\"0 0 {z}\"/><axis xyz=\"{axis}\"/>\
+                         <limit lower=\"-3.14\" upper=\"3.14\" effort=\"1\" velocity=\"1\"/></joint>", k - 1).unwrap();
+        }
+    }
+    xml
+}
