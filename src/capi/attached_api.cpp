@@ -189,13 +189,8 @@ OPX_API opx_status opx_linkset_get_attached_touch_links(const opx_linkset *links
     return guard(__func__, [&] {
         require_pointer(links, "links");
         require_pointer(out_count, "out_count");
-        const std::vector<uint32_t> &touching = links->links.attached(require_attached(links, object)).touch_links;
-        *out_count = touching.size();
-        if (capacity < touching.size())
-            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL, format("capacity %zu is smaller than the %zu touch links",
-                                                              capacity, touching.size()));
-        if (!touching.empty()) require_pointer(out_links, "out_links");
-        std::copy(touching.begin(), touching.end(), out_links);
+        copy_list_out(links->links.attached(require_attached(links, object)).touch_links, out_links, capacity,
+                      out_count, "out_links", "touch link count");
         return OPX_OK;
     });
 }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace octoprox::capi {
 
@@ -102,6 +103,22 @@ template <class Name>
 Pose read_pose_lazily(const opx_pose &pose, Name &&name) {
     if (pose_is_valid(pose)) return pose_from_ros(pose.position, pose.orientation);
     return read_pose(pose, name().c_str());
+}
+
+// A list handed out (the opx_*_get_* functions with a capacity):
+// *out_count gets its length whatever follows; a capacity below it is
+// OPX_ERROR_BUFFER_TOO_SMALL (`what` names the length, e.g. "joint
+// count"), and `out` (named `argument`) may be null for an empty list only.
+template <class T>
+void copy_list_out(const std::vector<T> &values, T *out, size_t capacity, size_t *out_count, const char *argument,
+                   const char *what) {
+    require_pointer(out_count, "out_count");
+    *out_count = values.size();
+    if (capacity < values.size())
+        throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,
+                       format("capacity %zu is smaller than the %s %zu", capacity, what, values.size()));
+    if (!values.empty()) require_pointer(out, argument);
+    std::copy(values.begin(), values.end(), out);
 }
 
 }  // namespace octoprox::capi

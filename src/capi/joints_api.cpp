@@ -24,14 +24,8 @@ OPX_API opx_status opx_linkset_get_active_joints(const opx_linkset *links, uint3
                                                  size_t capacity, size_t *out_count) {
     return guard(__func__, [&] {
         require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        const std::vector<uint32_t> &active = links->robot.joints.active_joints();
-        *out_count = active.size();
-        if (capacity < active.size())
-            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL,
-                           format("capacity %zu is smaller than the active joint count %zu", capacity, active.size()));
-        if (!active.empty()) require_pointer(out_joint_indices, "out_joint_indices");
-        std::copy(active.begin(), active.end(), out_joint_indices);
+        copy_list_out(links->robot.joints.active_joints(), out_joint_indices, capacity, out_count,
+                      "out_joint_indices", "active joint count");
         return OPX_OK;
     });
 }

@@ -198,14 +198,7 @@ OPX_API opx_status opx_linkset_get_joint_positions(const opx_linkset *links, dou
                                                    size_t *out_count) {
     return guard(__func__, [&] {
         require_pointer(links, "links");
-        require_pointer(out_count, "out_count");
-        const std::vector<double> &positions = links->robot.joints.positions();
-        *out_count = positions.size();
-        if (capacity < positions.size())
-            throw ApiError(OPX_ERROR_BUFFER_TOO_SMALL, format("capacity %zu is smaller than the joint count %zu",
-                                                              capacity, positions.size()));
-        if (!positions.empty()) require_pointer(out, "out");
-        std::copy(positions.begin(), positions.end(), out);
+        copy_list_out(links->robot.joints.positions(), out, capacity, out_count, "out", "joint count");
         return OPX_OK;
     });
 }
