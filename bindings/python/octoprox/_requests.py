@@ -2,9 +2,8 @@
 
 A query method gathers its keywords into a tuple, the key, in the order of
 ``names``.  A Query keeps one cache per request kind: the key of the last
-request is compared first (the usual loop asks the same thing every time;
-Query.collide and distance make that comparison inline), then a small
-dict, so a repeated query builds no ctypes struct and calls no
+request is compared first (the usual loop asks the same thing every time),
+then a small dict, so a repeated query builds no ctypes struct and calls no
 opx_x_init.  Keys holding a list or an array (region_min) build a struct
 every time.  The last kept request's address, an int, is what the
 compiled call path (octoprox._calls) passes.
@@ -23,9 +22,9 @@ _MAX_KEYS = 64  # distinct keys kept; more (a cutoff varied every call) start ov
 
 class RequestCache:
     """The request structs of one kind of query, by key.  ``key``,
-    ``request`` and ``address`` are the last ones (read inline by the query
-    methods); ``request`` is a ctypes byref of the struct, ready to pass,
-    ``address`` the struct's address."""
+    ``request`` and ``address`` are the last ones (the compiled call path
+    reads ``key`` and ``address``); ``request`` is a ctypes byref of the
+    struct, ready to pass, ``address`` the struct's address."""
 
     def __init__(self, struct_type: Type[ctypes.Structure], names: Sequence[str], where: str):
         """An empty cache of ``struct_type`` requests whose keys hold the

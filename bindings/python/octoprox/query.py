@@ -158,12 +158,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         key = (unknown_policy, occupancy_threshold, max_contacts, compute_cost, max_cost_boxes,
                unknown_probability, region_min, region_max, compute_penetration,
                obstacle_geometry)
-        cache = self._collide_requests
-        try:
-            same = key == cache.key
-        except ValueError:  # a numpy array among the values
-            same = False
-        request = cache.request if same else cache.lookup(key)
+        request = self._collide_requests.lookup(key)
         if world is not None or tree is None:
             out = s.CollisionResult(_COLLISION_RESULT_SIZE)
             self._map_result = None
@@ -251,12 +246,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
                 return out
         key = (unknown_policy, occupancy_threshold, abs_err, rel_err, cutoff, per_link,
                signed_distance, obstacle_geometry)
-        cache = self._distance_requests
-        try:
-            same = key == cache.key
-        except ValueError:  # a numpy array among the values
-            same = False
-        request = cache.request if same else cache.lookup(key)
+        request = self._distance_requests.lookup(key)
         out = s.DistanceResult(_DISTANCE_RESULT_SIZE)
         if world is not None or tree is None:
             query_with_world(self, tree, links, world, "Query.distance",
