@@ -81,6 +81,18 @@ def _array(address, ctype, shape, empty_dtype):
     return np.ctypeslib.as_array(ctypes.cast(address, ctypes.POINTER(ctype)), shape).copy()
 
 
+def _shape_view(out: s.Shape) -> SimpleNamespace:
+    """A stored shape (an opx_shape the library filled) as the shape
+    getters return it: kind (ShapeKind), pose (7 floats), radius, length,
+    size, and copies of its vertices and triangles."""
+    vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
+    triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
+    return SimpleNamespace(kind=ShapeKind(out.kind), pose=tuple(out.pose.position) +
+                           tuple(out.pose.orientation), radius=out.radius,
+                           length=out.length, size=tuple(out.size), vertices=vertices,
+                           triangles=triangles)
+
+
 class LinkSet(Handle, RobotModel):
     """A robot as links, each with shapes (metres, in the link frame), a
     padding, an enabled flag and a pose in the map frame; built by hand
@@ -193,12 +205,7 @@ class LinkSet(Handle, RobotModel):
         meshes (a mesh keeps only the vertices its triangles use)."""
         out = init_struct(s.Shape)
         lib.opx_linkset_get_shape(self, link, shape, out)
-        vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
-        triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
-        return SimpleNamespace(kind=out.kind, pose=tuple(out.pose.position) +
-                               tuple(out.pose.orientation), radius=out.radius,
-                               length=out.length, size=tuple(out.size), vertices=vertices,
-                               triangles=triangles)
+        return _shape_view(out)
 
     @api("LinkSet.link_name")
     def link_name(self, link: int) -> str:
@@ -406,12 +413,7 @@ class LinkSet(Handle, RobotModel):
         the OBJECT frame)."""
         out = init_struct(s.Shape)
         lib.opx_linkset_get_attached_shape(self, self._attached_index(obj), shape, out)
-        vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
-        triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
-        return SimpleNamespace(kind=ShapeKind(out.kind), pose=tuple(out.pose.position) +
-                               tuple(out.pose.orientation), radius=out.radius,
-                               length=out.length, size=tuple(out.size), vertices=vertices,
-                               triangles=triangles)
+        return _shape_view(out)
 
     @api("LinkSet.attached_touch_links")
     def attached_touch_links(self, obj: Union[int, str]) -> List[int]:

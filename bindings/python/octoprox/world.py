@@ -22,8 +22,6 @@ import os
 from types import SimpleNamespace
 from typing import Callable, List, Optional, Sequence, TypeVar, Union
 
-import numpy as np
-
 from . import _structs as s
 from ._arrays import triangle_array, vertex_array
 from ._enums import ShapeKind
@@ -31,7 +29,7 @@ from ._errors import invalid
 from ._handle import Handle, api, failure
 from ._library import init_struct, lib, make_pose
 from ._types import ArrayLike, PathLike, PoseLike, Vector3
-from .linkset import LinkRef, LinkSet, _array, _name, touch_link_names
+from .linkset import LinkRef, LinkSet, _name, _shape_view, touch_link_names
 from .octree import Octree
 
 ObjectRef = Union[int, str]  # an object's index or its name (the first so named)
@@ -225,12 +223,7 @@ class World(Handle):
         frame)."""
         out = init_struct(s.Shape)
         lib.opx_world_get_shape(self, self._index(obj), shape, out)
-        vertices = _array(out.vertices, ctypes.c_double, (out.vertex_count, 3), np.float64)
-        triangles = _array(out.indices, ctypes.c_uint32, (out.triangle_count, 3), np.uint32)
-        return SimpleNamespace(kind=out.kind, pose=tuple(out.pose.position) +
-                               tuple(out.pose.orientation), radius=out.radius,
-                               length=out.length, size=tuple(out.size), vertices=vertices,
-                               triangles=triangles)
+        return _shape_view(out)
 
     @api("World.attach_to")
     def attach_to(self, obj: ObjectRef, links: LinkSet, link: LinkRef, *,
