@@ -34,10 +34,10 @@ OPX_LIBRARY="$library" "$python" -m pip wheel --quiet --no-deps -w "$work/dist" 
 wheel="$(ls "$work"/dist/octoprox-*.whl)"
 echo "$wheel"
 headers="$("$python" -c 'import os, sysconfig; print(int(os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h"))))')"
-extension=0
-if "$python" -m zipfile -l "$wheel" | grep -q 'octoprox/_fastcall\.'; then
-  extension=1
-fi
+# Asked of zipfile itself: `zipfile -l | grep -q` fails under pipefail
+# when grep exits at the first match and the listing meets a closed pipe.
+extension="$("$python" -c 'import sys, zipfile
+print(int(any(n.startswith("octoprox/_fastcall.") for n in zipfile.ZipFile(sys.argv[1]).namelist())))' "$wheel")"
 if [ "$headers" != "$extension" ]; then
   echo "Python.h present: $headers, octoprox/_fastcall in the wheel: $extension"
   exit 1
