@@ -7,8 +7,8 @@
 //! present.
 mod common;
 use common::*;
-use octoprox::{pose_at, BasePoses, BatchRequest, ErrorKind, InsertMode, JointOrder, LinkSet,
-               MotionRequest, Octree, Pose, Query, QueryOptions, UrdfOptions};
+use octoprox::{pose_at, BasePoses, BatchRequest, ErrorKind, JointOrder, LinkSet, MotionRequest, Pose,
+               Query, QueryOptions, UrdfOptions};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -55,16 +55,6 @@ fn in_model_order(robot: &LinkSet, active: &[f64], filler: f64) -> Vec<f64> {
         model.extend(full);
     }
     model
-}
-
-fn scatter_map(seed: u64) -> Octree {
-    let mut rng = Lcg(seed);
-    let points: Vec<[f64; 3]> = (0..90)
-        .map(|_| [rng.uniform(-1.1, 1.1), rng.uniform(-1.1, 1.1), rng.uniform(0.15, 1.9)])
-        .collect();
-    let mut tree = new_tree(0.05);
-    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
-    tree
 }
 
 fn turned_base() -> Pose {

@@ -5,7 +5,7 @@
 mod common;
 use common::*;
 use octoprox::{pose_at, BasePoses, BatchRequest, CollisionRequest, DistanceRequest, ErrorKind,
-               InsertMode, LinkSet, MotionRequest, ObstacleGeometry, Octree, Query, QueryOptions,
+               LinkSet, MotionRequest, ObstacleGeometry, Octree, Query, QueryOptions,
                UrdfOptions};
 
 const JOINTS: usize = 7;
@@ -15,16 +15,6 @@ const JOINTS: usize = 7;
 fn arm() -> LinkSet {
     let xml = arm_urdf_links(JOINTS) + "</robot>";
     LinkSet::from_urdf_string(&xml, &UrdfOptions::default()).unwrap()
-}
-
-fn scatter_map() -> Octree {
-    let mut rng = Lcg(7);
-    let points: Vec<[f64; 3]> = (0..90)
-        .map(|_| [rng.uniform(-1.1, 1.1), rng.uniform(-1.1, 1.1), rng.uniform(0.15, 1.9)])
-        .collect();
-    let mut tree = new_tree(0.05);
-    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
-    tree
 }
 
 fn rows(n: usize, seed: u64) -> Vec<f64> {
@@ -44,7 +34,7 @@ fn single(query: &mut Query, tree: &Octree, robot: &mut LinkSet, q: &[f64]) -> b
 
 #[test]
 fn configurations_equal_single_calls_for_every_thread_count() {
-    let (mut robot, tree, q) = (arm(), scatter_map(), rows(120, 11));
+    let (mut robot, tree, q) = (arm(), scatter_map(7), rows(120, 11));
     let mut reference = new_query();
     let expected: Vec<bool> = q.chunks(JOINTS).map(|row| single(&mut reference, &tree, &mut robot, row)).collect();
     assert!(expected.iter().any(|&c| c) && expected.iter().any(|&c| !c));
@@ -61,7 +51,7 @@ fn configurations_equal_single_calls_for_every_thread_count() {
 
 #[test]
 fn base_poses_and_self_collision() {
-    let (mut robot, tree, q) = (arm(), scatter_map(), rows(40, 13));
+    let (mut robot, tree, q) = (arm(), scatter_map(7), rows(40, 13));
     let bases: Vec<_> = (0..40).map(|i| pose_at(-0.3 + 0.015 * i as f64, 0.0, 0.0)).collect();
     let mut query = new_query();
     let answers = query.check_configurations(&tree, &robot, &q, BasePoses::PerRow(&bases),
@@ -83,7 +73,7 @@ fn base_poses_and_self_collision() {
 
 #[test]
 fn motions_equal_a_walk_over_their_samples() {
-    let (mut robot, tree, starts) = (arm(), scatter_map(), rows(20, 3));
+    let (mut robot, tree, starts) = (arm(), scatter_map(7), rows(20, 3));
     let mut rng = Lcg(5);
     let goals: Vec<f64> = starts.iter().map(|v| v + rng.uniform(-0.4, 0.4)).collect();
     let request = MotionRequest { resolution: 0.05, max_threads: 2, ..Default::default() };
@@ -107,7 +97,7 @@ fn motions_equal_a_walk_over_their_samples() {
 
 #[test]
 fn bad_input_is_an_error_naming_the_argument() {
-    let (robot, tree) = (arm(), scatter_map());
+    let (robot, tree) = (arm(), scatter_map(7));
     let mut query = new_query();
     let error = query.check_configurations(&tree, &robot, &[0.0; 10], BasePoses::Origin, &BatchRequest::default())
         .unwrap_err();
@@ -129,7 +119,7 @@ fn bad_input_is_an_error_naming_the_argument() {
 /// single calls with the same geometry.
 #[test]
 fn obstacle_geometry_reaches_batch_and_motion_checks() {
-    let (mut robot, tree, q) = (arm(), scatter_map(), rows(60, 17));
+    let (mut robot, tree, q) = (arm(), scatter_map(7), rows(60, 17));
     let extents = ObstacleGeometry::PointExtents;
     let mut query = new_query();
     let cubes = query.check_configurations(&tree, &robot, &q, BasePoses::Origin, &BatchRequest::default()).unwrap();

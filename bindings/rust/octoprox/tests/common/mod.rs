@@ -1,6 +1,7 @@
 //! Scenes shared by the integration tests, the same as the C tests'
 //! (tests/c/opx_test.h): 25 cm cells, the sensor at the centre C0 of the
-//! cell [0, RES)^3.
+//! cell [0, RES)^3; and the generated arm's URDF, a map scattered around
+//! it and the random generator of the arm tests.
 #![allow(dead_code)]
 use octoprox::{pose_at, InsertMode, InsertOptions, LinkSet, Octree, OctreeOptions, Shape};
 
@@ -62,4 +63,16 @@ pub fn arm_urdf_links(joints: usize) -> String {
         }
     }
     xml
+}
+
+/// 90 occupied cells of 5 cm scattered around the generated arm (x and y
+/// within 1.1 m, z 0.15-1.9 m), from `seed`.
+pub fn scatter_map(seed: u64) -> Octree {
+    let mut rng = Lcg(seed);
+    let points: Vec<[f64; 3]> = (0..90)
+        .map(|_| [rng.uniform(-1.1, 1.1), rng.uniform(-1.1, 1.1), rng.uniform(0.15, 1.9)])
+        .collect();
+    let mut tree = new_tree(0.05);
+    tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
+    tree
 }
