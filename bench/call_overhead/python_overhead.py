@@ -9,9 +9,11 @@ safe crate's example call_overhead, each in its own process) and the
 Python calls in this process; each figure is the median of the rounds, in
 CPU time of the calling thread (other programs' load on the machine counts
 only through the caches).
-Python is timed three ways: octoprox.Query.collide as users call it (with
+Python is timed four ways: octoprox.Query.collide as users call it (with
 the compiled call path octoprox._fastcall when the package finds it), the
-same method with ctypes alone (as with OPX_CTYPES_ONLY=1), and the bare
+same with a keyword (max_contacts=1, the default: the request the query
+caches),
+the same method with ctypes alone (as with OPX_CTYPES_ONLY=1), and the bare
 ctypes call of opx_query_collide with everything prepared (what no binding
 built on ctypes alone can go below).
 
@@ -109,13 +111,23 @@ class PythonCallers:
             collide(tree, links)
         return (time.thread_time_ns() - start) / calls
 
+    def python_query_collide_keyword(self, calls):
+        # A keyword (the default value) makes it the compiled cached-request call.
+        collide, tree, links = self.query.collide, self.tree, self.links
+        start = time.thread_time_ns()
+        for _ in range(calls):
+            collide(tree, links, max_contacts=1)
+        return (time.thread_time_ns() - start) / calls
+
     def python_query_collide_ctypes(self, calls):
-        # The method's ctypes path: what it runs without octoprox._fastcall.
-        cached, self.query_module._collide_cached = self.query_module._collide_cached, None
+        # The Python method's ctypes path: what it runs without octoprox._fastcall.
+        query_class = type(self.query)
+        method = query_class.collide
+        query_class.collide = getattr(method, "__wrapped__", method)
         try:
             return self.python_query_collide(calls)
         finally:
-            self.query_module._collide_cached = cached
+            query_class.collide = method
 
     def python_ctypes_call(self, calls):
         bare, result = self.bare, self.result
@@ -138,7 +150,8 @@ def measure(args, octoprox):
     programs = {"c": args.c_program}
     if args.rust_program:
         programs["rust_query_collide"] = args.rust_program
-    names = ("python_ctypes_call", "python_query_collide", "python_query_collide_ctypes")
+    names = ("python_ctypes_call", "python_query_collide", "python_query_collide_keyword",
+             "python_query_collide_ctypes")
     rounds = {name: [] for name in tuple(programs) + names}
     for name in names:
         getattr(callers, name)(max(1, args.calls // 10))  # warm-up
@@ -153,6 +166,7 @@ def measure(args, octoprox):
 ROWS = [("C, `opx_query_collide`", "c"), ("Rust, `Query::collide`", "rust_query_collide"),
         ("Python, the bare ctypes call", "python_ctypes_call"),
         ("Python, `Query.collide`", "python_query_collide"),
+        ("Python, `Query.collide` with a keyword", "python_query_collide_keyword"),
         ("Python, `Query.collide`, ctypes alone", "python_query_collide_ctypes")]
 
 

@@ -1,15 +1,17 @@
-"""The usual call of Query.collide and Query.distance, the package's small
-and frequent queries (the keywords of the call before, no world), through
-the compiled module octoprox._fastcall when it can be imported: ctypes'
-per-call conversions cost more than a tiny query.  Without it, and for
-every other call, the methods call the library through ctypes; both paths
-give the same answers and raise the same errors.
+"""Query.collide and Query.distance, the package's small and frequent
+queries, as methods of the compiled module octoprox._fastcall when it can
+be imported: ctypes' per-call conversions cost more than a tiny query.
 
-    collide = cached_call("opx_query_collide", CollisionResult, Octree, LinkSet)
-    out = collide(tree, links, query._address, tree._address, links._address,
-                  cache.address, cache.key, *key)
-    # a new CollisionResult (status 0), the status (a negative int), or None:
-    # not the usual call (another key, other operand types), ctypes serves it
+    Query.collide = compiled_method(Query.collide, "opx_query_collide", default_request,
+                                    CollisionResult, Query, Octree, LinkSet, "_map_result",
+                                    "_collide_requests", names)
+
+The compiled method serves `query.collide(tree, links)` with the default
+request, and a call with keywords (no world) whose request the query's
+RequestCache holds as its last; no Python frame is entered.  Every other
+call, and a failing status, runs the Python method, which calls the
+library through ctypes (and fills the cache); both give the same answers
+and raise the same errors.
 
 The module is looked up in the package (a wheel carries it), then next to
 the library $OPX_LIBRARY names (a build tree puts it there, named
@@ -22,7 +24,7 @@ import os
 import sysconfig
 from ctypes import c_void_p
 from types import ModuleType
-from typing import Callable, Optional
+from typing import Callable, Optional, Sequence
 
 from ._library import lib
 
@@ -60,15 +62,23 @@ def _find_extension() -> Optional[ModuleType]:
 EXTENSION = _find_extension()
 
 
-def cached_call(name: str, result_type, tree_type, links_type) -> Optional[Callable]:
-    """The extension's call (see the module) for the library function
-    ``name`` (the shape of opx_query_collide), or None without the
-    extension.  It serves a call whose operands are a ``tree_type`` and a
-    ``links_type`` and whose key equals the cached key: a new
-    ``result_type`` (status 0) or the status (a negative int); any other
-    call gets None and the method's own ctypes path serves it."""
+def compiled_method(method: Callable, name: str, request: ctypes.Structure, result_type,
+                    query_type, tree_type, links_type, result_attribute: Optional[str],
+                    cache_attribute: str, names: Sequence[str]) -> Callable:
+    """``method`` (a query class's function taking query, tree, links and
+    the keywords ``names`` of its request key, and ``world``) with its usual
+    call served by the extension (see the module): the library function
+    ``name`` is called with ``request`` (the request of the defaults; the
+    caller keeps it alive) or with the request of the query's cache
+    ``cache_attribute`` whose last key equals the call's; the query's
+    ``result_attribute`` (None: none) is set to the result.  Help,
+    signature and docstring are ``method``'s.  Without the extension:
+    ``method`` itself."""
     if EXTENSION is None:
-        return None
+        return method
+    defaults = tuple(method.__kwdefaults__[keyword] for keyword in names)
     function = lib[name]  # item access makes a new object; lib.name keeps its errcheck
-    return EXTENSION.bind(ctypes.cast(function, c_void_p).value, result_type, tree_type,
-                          links_type)
+    return EXTENSION.method(method, ctypes.cast(function, c_void_p).value,
+                            ctypes.addressof(request), result_type, query_type, tree_type,
+                            links_type, result_attribute, cache_attribute, tuple(names),
+                            defaults)

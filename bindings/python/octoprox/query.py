@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from . import _structs as s
-from ._calls import cached_call
+from ._calls import compiled_method
 from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, box_array, pose_array, pose_strides, read_array
 from ._enums import Engine, ObstacleGeometry, UnknownPolicy
 from ._errors import invalid
@@ -47,15 +47,11 @@ _PATH = ("unknown_policy", "occupancy_threshold", "compute_distance", "compute_c
 _COLLIDE_BOXES = ("max_contacts", "compute_penetration")
 _DISTANCE_BOXES = ("abs_err", "rel_err", "cutoff", "per_link", "signed_distance")
 
-# Function objects without errcheck and result sizes, read once (the fast path).
+# Function objects without errcheck and result sizes, read once.
 _collide = unchecked("opx_query_collide")
 _distance = unchecked("opx_query_distance")
 _COLLISION_RESULT_SIZE = ctypes.sizeof(s.CollisionResult)
 _DISTANCE_RESULT_SIZE = ctypes.sizeof(s.DistanceResult)
-# The usual call (the keywords of the call before, no world) in C, or None
-# without the compiled module (octoprox._calls).
-_collide_cached = cached_call("opx_query_collide", s.CollisionResult, Octree, LinkSet)
-_distance_cached = cached_call("opx_query_distance", s.DistanceResult, Octree, LinkSet)
 
 
 class Query(Handle, SelfCollisionQueries, BatchQueries):
@@ -139,22 +135,6 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         wrong types or an unknown keyword, ValueError
         (InvalidArgumentError) for bad values or a closed handle.
         """
-        if world is None and _collide_cached is not None:
-            cache = self._collide_requests
-            try:
-                out = _collide_cached(tree, links, self._address, tree._address, links._address,
-                                      cache.address, cache.key, unknown_policy,
-                                      occupancy_threshold, max_contacts, compute_cost,
-                                      max_cost_boxes, unknown_probability, region_min, region_max,
-                                      compute_penetration, obstacle_geometry)
-            except AttributeError:  # operands that are no handles: the path below says so
-                out = None
-            if out is not None:
-                if type(out) is int:  # a failing status
-                    self._map_result = None
-                    raise failure(out, "Query.collide", self, tree, links)
-                self._map_result = out
-                return out
         key = (unknown_policy, occupancy_threshold, max_contacts, compute_cost, max_cost_boxes,
                unknown_probability, region_min, region_max, compute_penetration,
                obstacle_geometry)
@@ -231,19 +211,6 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
         frame), cell_center, cell_size, cell_probability, cell_class.
         Raises as collide().
         """
-        if world is None and _distance_cached is not None:
-            cache = self._distance_requests
-            try:
-                out = _distance_cached(tree, links, self._address, tree._address, links._address,
-                                       cache.address, cache.key, unknown_policy,
-                                       occupancy_threshold, abs_err, rel_err, cutoff, per_link,
-                                       signed_distance, obstacle_geometry)
-            except AttributeError:  # operands that are no handles: the path below says so
-                out = None
-            if out is not None:
-                if type(out) is int:  # a failing status
-                    raise failure(out, "Query.distance", self, tree, links)
-                return out
         key = (unknown_policy, occupancy_threshold, abs_err, rel_err, cutoff, per_link,
                signed_distance, obstacle_geometry)
         request = self._distance_requests.lookup(key)
@@ -354,3 +321,21 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
     def _check_links(links, where):
         if not isinstance(links, LinkSet):
             raise TypeError(f"{where}: expected a LinkSet, got {type(links).__name__}")
+
+
+def _default_request(method, cache: RequestCache) -> ctypes.Structure:
+    """The request ``method`` builds when called without keywords."""
+    return cache.build(tuple(method.__kwdefaults__[name] for name in cache._names))
+
+
+# The usual call in C (octoprox._calls); the default requests it uses.
+_DEFAULT_COLLIDE = _default_request(Query.collide, RequestCache(s.CollisionRequest, _COLLIDE,
+                                                                 "Query.collide"))
+_DEFAULT_DISTANCE = _default_request(Query.distance, RequestCache(s.DistanceRequest, _DISTANCE,
+                                                                  "Query.distance"))
+Query.collide = compiled_method(Query.collide, "opx_query_collide", _DEFAULT_COLLIDE,
+                                s.CollisionResult, Query, Octree, LinkSet, "_map_result",
+                                "_collide_requests", _COLLIDE)
+Query.distance = compiled_method(Query.distance, "opx_query_distance", _DEFAULT_DISTANCE,
+                                 s.DistanceResult, Query, Octree, LinkSet, None,
+                                 "_distance_requests", _DISTANCE)

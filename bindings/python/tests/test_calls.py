@@ -1,13 +1,16 @@
-"""Query.collide and Query.distance through the compiled call path
-(octoprox._fastcall) and through ctypes alone answer and fail alike: every
+"""Query.collide and Query.distance as compiled methods
+(octoprox._fastcall) and as Python methods on ctypes alone answer and fail alike: every
 scenario runs twice in one process, once as the package runs it and once
 with the compiled path switched off, and the results (or the errors' types
 and messages) must be equal.  ctest runs the whole suite both ways too:
 python_unittest with the module the build puts beside the library
 (OPX_EXPECT_EXTENSION=1), python_unittest_ctypes with OPX_CTYPES_ONLY=1."""
+import contextlib
 import ctypes
+import inspect
 import os
 import threading
+import typing
 import unittest
 from unittest import mock
 
@@ -33,46 +36,78 @@ def outcome(call):
     return result.to_dict()
 
 
-class ServedCalls:
-    """Counts the calls the compiled path serves (it returns a result or
-    a status) and those it leaves to ctypes (None)."""
+def python_method(name):
+    method = getattr(octoprox.Query, name)
+    return getattr(method, "__wrapped__", method)
 
-    def __init__(self, name):
-        self.name, self.served, self.deferred = name, 0, 0
-        self.call = getattr(query_module, name)
 
-    def __call__(self, *args):
-        out = self.call(*args)
-        if out is None:
-            self.deferred += 1
-        else:
-            self.served += 1
-        return out
+def ctypes_alone():
+    """The methods as without the compiled module: the Python methods."""
+    patches = contextlib.ExitStack()
+    for name in ("collide", "distance"):
+        patches.enter_context(mock.patch.object(octoprox.Query, name, python_method(name)))
+    return patches
+
+
+class CountedMethod:
+    """Query.collide's Python method, counting the calls the compiled
+    method leaves to it."""
+
+    def __init__(self):
+        self.method = python_method("collide")
+        self.__kwdefaults__ = self.method.__kwdefaults__
+        self.calls = 0
+
+    def __call__(self, *args, **keywords):
+        self.calls += 1
+        return self.method(*args, **keywords)
+
+    def compiled(self):
+        return _calls.compiled_method(self, "opx_query_collide", query_module._DEFAULT_COLLIDE,
+                                      octoprox.CollisionResult, octoprox.Query, octoprox.Octree,
+                                      octoprox.LinkSet, "_map_result", "_collide_requests",
+                                      query_module._COLLIDE)
 
 
 class TheEnvironmentChoosesThePath(unittest.TestCase):
     def test_the_compiled_path_is_used_as_the_environment_says(self):
+        compiled = type(octoprox.Query.collide).__name__ == "method"
         if switched_on("OPX_CTYPES_ONLY"):
             self.assertIsNone(_calls.EXTENSION)
-            self.assertIsNone(query_module._collide_cached)
+            self.assertFalse(compiled)
         elif switched_on("OPX_EXPECT_EXTENSION"):
             self.assertIsNotNone(_calls.EXTENSION, "the build made octoprox_fastcall, not found")
-            self.assertIsNotNone(query_module._collide_cached)
-            self.assertIsNotNone(query_module._distance_cached)
+            self.assertTrue(compiled)
+            self.assertEqual(type(octoprox.Query.distance).__name__, "method")
         else:
             self.skipTest("neither OPX_CTYPES_ONLY nor OPX_EXPECT_EXTENSION set")
 
     def test_binding_checks_its_arguments(self):
         if _calls.EXTENSION is None:
             self.skipTest("no compiled call path")
-        with self.assertRaises(ValueError):
-            _calls.EXTENSION.bind(0, octoprox.CollisionResult, octoprox.Octree, octoprox.LinkSet)
+        types = (octoprox.CollisionResult, octoprox.Query, octoprox.Octree, octoprox.LinkSet)
+        good = (print, 1, 1) + types + (None, "_collide_requests", ("a",), (0,))
+        _calls.EXTENSION.method(*good)
+        for at, bad in ((1, 0), (2, 0), (3, "not a type"), (7, 5), (8, None), (9, ("a", 1)),
+                        (10, (0, 1)), (9, ()), (10, ())):
+            with self.subTest(argument=at, value=bad):
+                with self.assertRaises((TypeError, ValueError)):
+                    _calls.EXTENSION.method(*good[:at], bad, *good[at + 1:])
         with self.assertRaises(TypeError):
-            _calls.EXTENSION.bind(1, "not a type", octoprox.Octree, octoprox.LinkSet)
-        call = _calls.cached_call("opx_query_collide", octoprox.CollisionResult, octoprox.Octree,
-                                  octoprox.LinkSet)
+            _calls.EXTENSION.method(*good[:-1])
         with self.assertRaises(TypeError):
-            call(1, 2)
+            _calls.EXTENSION.method(*good, 1)
+
+    def test_the_compiled_methods_show_the_python_methods(self):
+        for name in ("collide", "distance"):
+            method = getattr(octoprox.Query, name)
+            python = getattr(method, "__wrapped__", method)
+            self.assertEqual(inspect.signature(method), inspect.signature(python))
+            self.assertEqual(method.__doc__, python.__doc__)
+            self.assertEqual(inspect.getdoc(method), inspect.getdoc(python))
+            self.assertEqual(method.__qualname__, f"Query.{name}")
+            self.assertEqual(typing.get_type_hints(method), typing.get_type_hints(python))
+            self.assertTrue(inspect.isroutine(method))
 
 
 @unittest.skipIf(_calls.EXTENSION is None, "no compiled call path (built beside the library)")
@@ -87,8 +122,7 @@ class BothPathsAgree(unittest.TestCase):
         call of a key is the one it serves) and on ctypes alone, each with
         a fresh Query; returns the compiled and the ctypes outcomes."""
         compiled = [outcome(lambda: scenario(query)) for query in [octoprox.Query()] * 2]
-        with mock.patch.object(query_module, "_collide_cached", None), \
-                mock.patch.object(query_module, "_distance_cached", None):
+        with ctypes_alone():
             plain = [outcome(lambda: scenario(query)) for query in [octoprox.Query()] * 2]
         self.assertEqual(compiled, plain)
         return compiled[-1]
@@ -115,18 +149,42 @@ class BothPathsAgree(unittest.TestCase):
                         return Rows(result, query.link_distances())
                     self.both(distance)
 
-    def test_the_usual_call_is_served_and_the_others_are_left_to_ctypes(self):
-        counter = ServedCalls("_collide_cached")
+    def test_the_usual_call_is_served_and_the_others_are_left_to_python(self):
+        counted = CountedMethod()
         query = octoprox.Query()
-        with mock.patch.object(query_module, "_collide_cached", counter):
-            first = query.collide(self.tree, self.touching)  # the request is built
-            second = query.collide(self.tree, self.touching)
+        with mock.patch.object(octoprox.Query, "collide", counted.compiled()):
+            first = query.collide(self.tree, self.touching)  # the default request
+            second = query.collide(self.tree, self.touching, world=None)  # its key not cached yet
+            self.assertEqual(counted.calls, 1)
+            query.collide(self.tree, self.touching, world=None)
+            query.collide(self.tree, self.touching, max_contacts=2)  # the request is built
+            query.collide(self.tree, self.touching, max_contacts=2)
+            query.collide(self.tree, self.touching, max_contacts=2, unknown_policy=0)
+            self.assertEqual(counted.calls, 2)
             query.collide(self.tree, self.touching, region_min=np.zeros(3))  # an array: not kept
+            query.collide(self.tree, self.touching, region_min=np.zeros(3))
             query.collide(self.tree, self.touching, world=octoprox.World())
-        self.assertEqual((counter.served, counter.deferred), (1, 2))
+            self.assertEqual(counted.calls, 5)
+            with self.assertRaises(TypeError):
+                query.collide(self.tree, self.touching, no_such_keyword=1)
+            self.assertEqual(counted.calls, 6)
+            last = query.collide(self.tree, self.touching)
+        self.assertIs(query._map_result, last)  # what contacts() reads
+        self.assertEqual(query.contacts()["link"].tolist(), [0])
         self.assertIsNot(first, second)  # a new result every call
         self.assertEqual(first.to_dict(), second.to_dict())
         self.assertEqual(second.struct_size, ctypes.sizeof(octoprox.CollisionResult))
+
+    def test_the_method_is_called_as_python_methods_are(self):
+        class Subclass(octoprox.Query):
+            pass
+        for query in (octoprox.Query(), Subclass()):
+            bound = query.collide
+            self.assertTrue(bound(self.tree, self.touching).collided)
+            self.assertTrue(octoprox.Query.collide(query, self.tree, self.touching).collided)
+            self.assertFalse(type(query).distance(query, self.tree, self.apart).collided)
+        with self.assertRaises(TypeError):
+            octoprox.Query().collide(self.tree)
 
     def test_closed_handles_are_named(self):
         nouns = {"tree": "octree", "links": "link set", "query": "query"}
