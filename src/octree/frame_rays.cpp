@@ -120,15 +120,15 @@ void merge_same_cells(std::vector<CellExtent> &extents) {
     extents.resize(kept);
 }
 
-// The rays of points [begin, end).
+// The rays of points [begin, end), in lists with room for `room` rays.
 void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
-                  const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
+                  const octomap::point3d &origin, size_t begin, size_t end, size_t room, RayPart &part) {
     const bool limited = settings.max_range > 0.0 && std::isfinite(settings.max_range);
     FrameRays &rays = part.rays;
     InsertCounts &counts = part.counts;
-    rays.ends.reserve(end - begin);
-    rays.end_keys.reserve(end - begin);
-    rays.hit_keys.reserve(end - begin);
+    rays.ends.reserve(room);
+    rays.end_keys.reserve(room);
+    rays.hit_keys.reserve(room);
     ExtentRuns extents(mapper.resolution(), rays.hit_extents);
     octomap::OcTreeKey key;
     for (size_t i = begin; i < end; ++i) {
@@ -204,10 +204,12 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
     const bool origin_inside = mapper.key(origin, origin_key);
     if (settings.raycast && !origin_inside) throw_invalid("sensor_pose.position lies outside the map cube");
 
+    // The first part's lists become the frame's: they have room for every
+    // point, so the other parts are appended without moving them.
     std::vector<RayPart> parts(threads);
     run_tasks(threads, [&](size_t i) {
-        prepare_part(mapper, points, settings, origin, points.count * i / threads, points.count * (i + 1) / threads,
-                     parts[i]);
+        const size_t begin = points.count * i / threads, end = points.count * (i + 1) / threads;
+        prepare_part(mapper, points, settings, origin, begin, end, i == 0 ? points.count : end - begin, parts[i]);
     });
     FrameRays rays = std::move(parts[0].rays);
     rays.origin = origin;
