@@ -53,7 +53,9 @@ private:
     double factor_;
 };
 
-void add_ray(const octomap::point3d &end, const octomap::OcTreeKey &key, FrameRays &rays) {
+// Once a point: inlined at both calls (GCC keeps one out-of-line copy otherwise).
+inline __attribute__((always_inline)) void add_ray(const octomap::point3d &end, const octomap::OcTreeKey &key,
+                                                   FrameRays &rays) {
     rays.ends.push_back(end);
     rays.end_keys.push_back(key);
     const uint32_t k[3] = {key[0], key[1], key[2]};
