@@ -36,12 +36,13 @@ class RayBatch {
 public:
     explicit RayBatch(RayQueue &queue) : queue_(queue) {}
 
-    bool next(LaneRay &ray, RaySetup &setup) {
-        if (taken_ == count_ && !fill()) return false;
+    // The set-up is read in place: copying it whole right after
+    // ray_setup_four wrote it field by field would stall on the stores.
+    const RaySetup *next(LaneRay &ray) {
+        if (taken_ == count_ && !fill()) return nullptr;
         const int i = taken_++;
-        setup = setups_[i];
-        queue_.start(indices_[i], setup, ray);
-        return true;
+        queue_.start(indices_[i], setups_[i], ray);
+        return &setups_[i];
     }
     uint64_t origin_bit() const { return queue_.origin_bit(); }
 
@@ -99,9 +100,8 @@ struct alignas(32) Lanes {
     // Fills the lane with the queue's next ray; false when none is left.
     bool refill(int lane, RayBatch &rays) {
         LaneRay ray;
-        RaySetup setup;
-        if (rays.next(ray, setup)) {
-            load(lane, ray, setup);
+        if (const RaySetup *setup = rays.next(ray)) {
+            load(lane, ray, *setup);
             return true;
         }
         idle(lane, rays.origin_bit());
