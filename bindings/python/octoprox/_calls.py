@@ -62,6 +62,12 @@ def _find_extension() -> Optional[ModuleType]:
 EXTENSION = _find_extension()
 
 
+def keyword_defaults(method: Callable, names: Sequence[str]) -> tuple:
+    """The default values of ``method``'s keywords ``names``, in order: the
+    key of its call without keywords."""
+    return tuple(method.__kwdefaults__[keyword] for keyword in names)
+
+
 def compiled_method(method: Callable, name: str, request: ctypes.Structure, result_type,
                     query_type, tree_type, links_type, result_attribute: Optional[str],
                     cache_attribute: str, names: Sequence[str]) -> Callable:
@@ -76,9 +82,8 @@ def compiled_method(method: Callable, name: str, request: ctypes.Structure, resu
     ``method`` itself."""
     if EXTENSION is None:
         return method
-    defaults = tuple(method.__kwdefaults__[keyword] for keyword in names)
     function = lib[name]  # item access makes a new object; lib.name keeps its errcheck
     return EXTENSION.method(method, ctypes.cast(function, c_void_p).value,
                             ctypes.addressof(request), result_type, query_type, tree_type,
                             links_type, result_attribute, cache_attribute, tuple(names),
-                            defaults)
+                            keyword_defaults(method, names))

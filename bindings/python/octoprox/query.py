@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from . import _structs as s
-from ._calls import compiled_method
+from ._calls import compiled_method, keyword_defaults
 from ._arrays import CONTACT_DTYPE, COST_BOX_DTYPE, box_array, pose_array, pose_strides, read_array
 from ._enums import Engine, ObstacleGeometry, UnknownPolicy
 from ._errors import invalid
@@ -325,7 +325,7 @@ class Query(Handle, SelfCollisionQueries, BatchQueries):
 
 def _default_request(method, cache: RequestCache) -> ctypes.Structure:
     """The request ``method`` builds when called without keywords."""
-    return cache.build(tuple(method.__kwdefaults__[name] for name in cache._names))
+    return cache.build(keyword_defaults(method, cache._names))
 
 
 # The usual call in C (octoprox._calls); the default requests it uses.
