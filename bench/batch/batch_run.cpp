@@ -78,10 +78,12 @@ void sphere_rows(Robot &arm, const Scene &scene, const RunOptions &options, std:
                         {"collided", double(a.collided)}}});
     const SphereCallTiming s = time_single_sphere_calls(scene, options.configurations, options.rounds, false);
     rows.push_back(Row{"sphere", scene.name, "single sphere call", s.ns_per_call / 1000.0,
-                       {{"ns_per_call", s.ns_per_call}, {"calls", double(s.calls)}, {"collided", double(s.collided)}}});
+                       {{"ns_per_call", s.ns_per_call}, {"first_call_us", s.first_call_us}, {"calls", double(s.calls)},
+                        {"collided", double(s.collided)}}});
     const SphereCallTiming l = time_single_sphere_calls(scene, options.configurations, options.rounds, true);
     rows.push_back(Row{"sphere", scene.name, "single sphere link set call", l.ns_per_call / 1000.0,
-                       {{"ns_per_call", l.ns_per_call}, {"calls", double(l.calls)}, {"collided", double(l.collided)}}});
+                       {{"ns_per_call", l.ns_per_call}, {"first_call_us", l.first_call_us}, {"calls", double(l.calls)},
+                        {"collided", double(l.collided)}}});
     if (s.collided != l.collided) {
         std::fprintf(stderr, "opx-bench-batch: single spheres: %zu collided through opx_query_collide_spheres, %zu "
                              "through a link set\n", s.collided, l.collided);

@@ -18,6 +18,9 @@ SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, in
 
 struct SphereCallTiming {
     double ns_per_call = 0.0;
+    // The first call on the map, which builds what later calls read (the
+    // map's obstacle grid, or the link set's tree).
+    double first_call_us = 0.0;
     size_t calls = 0, collided = 0;
 };
 

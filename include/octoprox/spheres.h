@@ -3,9 +3,19 @@
  * (VAMP, cuRobo, MoveIt's spherized arms).  Each sphere is answered on its
  * own, exactly as opx_query_collide answers a link set holding that sphere
  * alone (the same touch rule: within 1e-9 m is touching), but without a
- * link set to place: a sphere costs about a tenth of a one-sphere
- * opx_query_collide call (docs/performance.md).  The map is read directly,
- * whatever the query's engine, and the query's world is not checked.
+ * link set to place: a 5 cm sphere on a 2 cm frame costs 0.07-0.09 us a
+ * call, a ninth of a one-sphere opx_query_collide call
+ * (docs/performance.md).  The map is read directly, whatever the query's
+ * engine, and the query's world is not checked.
+ *
+ * With unknown space free, the first call after the map changed builds
+ * the map's obstacle grid: its obstacle cells as 4x4x4-cell bitmaps,
+ * indexed over the box they span (5 bytes a 64 cells of that box, 8 more
+ * a brick holding obstacles).  The map keeps it until its next change and
+ * every query and thread shares it; it takes about 0.3 ms on a 640x480
+ * frame at 2 cm.  Maps whose obstacles span more than 2^30 cells
+ * (at 2 cm, a box about 20 m a side), and spheres wider than 60 cells,
+ * take a descent of the octree instead, with the same answers.
  */
 #ifndef OCTOPROX_SPHERES_H
 #define OCTOPROX_SPHERES_H

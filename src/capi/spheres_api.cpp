@@ -56,11 +56,13 @@ OPX_API opx_status opx_query_collide_spheres(opx_query *query, const opx_octree 
         if (stride == 0) stride = 4 * sizeof(double);
         else if (stride < 4 * sizeof(double))
             throw_invalid(format("stride %zu is below a row of 4 doubles (32 bytes); 0 means packed", stride));
+        const ObstacleGrid *grid =
+            settings.unknown_occupied ? nullptr : query->context.obstacle_grid(*tree->tree, settings.threshold_log_odds);
         for (size_t i = 0; i < count; ++i) {
             Vec3 center;
             double radius = 0.0;
             read_sphere(spheres, stride, i, center, radius);
-            out_collided[i] = sphere_collides(*tree->tree, center, radius, settings) ? 1 : 0;
+            out_collided[i] = sphere_collides(*tree->tree, grid, center, radius, settings) ? 1 : 0;
         }
         return OPX_OK;
     });

@@ -7,6 +7,7 @@
 #include "octree/frame_marks.hpp"
 #include "geometry/pose.hpp"
 #include "octree/octree_params.hpp"
+#include "octree/obstacle_grid_cache.hpp"
 #include "octree/octree_view.hpp"
 
 #include <cstddef>
@@ -106,6 +107,13 @@ public:
     // that built structures from this map rebuilds them when either moved.
     uint64_t identity() const { return identity_; }
     uint64_t generation() const { return generation_; }
+    // The obstacle leaves at or above `threshold` as a grid
+    // (obstacle_grid.hpp), built on the first request for this state of
+    // the map and shared by every caller; nullptr when the map's obstacles
+    // span too large a box.  Thread-safe, as const calls are.
+    std::shared_ptr<const ObstacleGrid> obstacle_grid(float threshold) const {
+        return grid_cache_.get(view(), generation_, threshold);
+    }
 
 private:
     void apply_params();
@@ -121,6 +129,7 @@ private:
     Aabb known_bounds_;
     uint64_t identity_ = next_identity();
     uint64_t generation_ = 0;
+    ObstacleGridCache grid_cache_;
     static uint64_t next_identity();
 };
 

@@ -51,6 +51,18 @@ PathOutcome QueryContext::path(const SensorOctree *tree, const LinkSet &links, c
     return path_.run(PathRequest{tree, world_, links, poses, waypoints, settings}, *engine_, cost_, cost_boxes_);
 }
 
+const ObstacleGrid *QueryContext::obstacle_grid(const SensorOctree &tree, float threshold) {
+    const GridKey key{tree.identity(), tree.generation(), threshold};
+    if (!grid_known_ || key.identity != grid_key_.identity || key.generation != grid_key_.generation ||
+        key.threshold != grid_key_.threshold) {
+        grid_known_ = false;
+        grid_ = tree.obstacle_grid(threshold);
+        grid_key_ = key;
+        grid_known_ = true;
+    }
+    return grid_.get();
+}
+
 AmortizedEngine &QueryContext::amortized_engine() {
     if (amortized_ == nullptr)
         throw_invalid("query uses OPX_ENGINE_DIRECT; caller boxes need a context made with OPX_ENGINE_AMORTIZED");

@@ -90,6 +90,11 @@ public:
     }
     const std::vector<SelfContact> &self_contacts() const { return self_contacts_; }
 
+    // The map's obstacle grid for a threshold (SensorOctree::obstacle_grid),
+    // kept while the map's identity and generation and the threshold stay:
+    // a run of sphere queries asks the map once.  Null: no grid.
+    const ObstacleGrid *obstacle_grid(const SensorOctree &tree, float threshold);
+
     // The results of the last queries.
     const std::vector<Contact> &contacts() const { return contacts_; }
     const std::vector<WorldContact> &world_contacts() const { return world_contacts_; }
@@ -120,6 +125,12 @@ private:
     const World *world_ = nullptr;
     WorldCollider world_collider_;
     std::vector<WorldContact> world_contacts_;
+    struct GridKey {
+        uint64_t identity = 0, generation = 0;
+        float threshold = 0.0f;
+    } grid_key_;
+    std::shared_ptr<const ObstacleGrid> grid_;
+    bool grid_known_ = false;  // grid_ is the one for grid_key_
 };
 
 }  // namespace octoprox

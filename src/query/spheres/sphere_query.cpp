@@ -2,6 +2,7 @@
 
 #include "narrowphase/narrow_phase.hpp"
 #include "octree/octree_cell.hpp"
+#include "query/spheres/sphere_grid.hpp"
 
 #include <cmath>
 
@@ -116,9 +117,10 @@ private:
     ObstacleModel model_;
 };
 
-}  // namespace
-
-bool sphere_collides(const SensorOctree &tree, const Vec3 &center, double radius, const SphereSettings &settings) {
+// The descent from the root; out of line, so that the grid's answer
+// costs no more than its own work.
+__attribute__((noinline)) bool descend(const SensorOctree &tree, const Vec3 &center, double radius,
+                                       const SphereSettings &settings) {
     // One placed sphere a thread, reused: a PlacedShape is too large to
     // build per call.
     thread_local PlacedShape sphere;
@@ -129,6 +131,18 @@ bool sphere_collides(const SensorOctree &tree, const Vec3 &center, double radius
     sphere.box = Aabb::from_center(center, Vec3::Constant(radius));
     const OctreeView view = tree.view();
     return SphereDescent(view, sphere, settings).run();
+}
+
+}  // namespace
+
+bool sphere_collides(const SensorOctree &tree, const ObstacleGrid *grid, const Vec3 &center, double radius,
+                     const SphereSettings &settings) {
+    if (grid != nullptr && !settings.unknown_occupied && grid->threshold() == settings.threshold_log_odds) {
+        const GridAnswer answer =
+            sphere_on_grid(*grid, center, radius, tree.params().resolution, settings.point_extents);
+        if (answer != GridAnswer::kUndecided) return answer == GridAnswer::kYes;
+    }
+    return descend(tree, center, radius, settings);
 }
 
 }  // namespace octoprox
