@@ -140,6 +140,40 @@ private:
     std::vector<double> boxes_;
 };
 
+// Spheres against a map of the attempt's own, read from the shared map's
+// image, so that every attempt's call builds the map's obstacle grid.
+// Failed, the call leaves the map as it was; the retry builds the grid.
+class SpheresAttempt : public Attempt {
+public:
+    SpheresAttempt() : query_(new_query(OPX_ENGINE_DIRECT)) {
+        static const std::vector<unsigned char> image = map_image(shared_map(), OPX_FORMAT_OT);
+        require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &tree_), "opx_octree_load_memory");
+        Lcg rng(11);
+        for (size_t i = 0; i < kSpheres; ++i)
+            for (double value : {rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.0, 2.5),
+                                 rng.uniform(0.0, 0.3)})
+                rows_.push_back(value);
+    }
+    ~SpheresAttempt() override {
+        opx_query_destroy(query_);
+        opx_octree_destroy(tree_);
+    }
+    opx_status call() override {
+        return opx_query_collide_spheres(query_, tree_, rows_.data(), kSpheres, 0, nullptr, collided_, kSpheres);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override {
+        for (size_t i = 0; i < kSpheres; ++i) record.add("sphere collided", uint32_t(collided_[i]));
+    }
+
+private:
+    static constexpr size_t kSpheres = 40;
+    opx_query *query_;
+    opx_octree *tree_ = nullptr;
+    std::vector<double> rows_;
+    uint8_t collided_[kSpheres] = {};
+};
+
 std::string case_name(const std::string &what, int32_t engine, Stage stage) {
     return what + (engine == OPX_ENGINE_DIRECT ? " direct " : " amortized ") + stage_name(stage);
 }
@@ -164,6 +198,8 @@ std::vector<SweepCase> query_cases() {
         for (QueryKind kind : {QueryKind::kCollideBoxes, QueryKind::kDistanceBoxes})
             cases.push_back(query_case(kind, OPX_ENGINE_AMORTIZED, stage));
     }
+    cases.push_back({"opx_query_collide_spheres on a new map",
+                     [] { return std::unique_ptr<Attempt>(new SpheresAttempt()); }, {}});
     return cases;
 }
 

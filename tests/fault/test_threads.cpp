@@ -2,9 +2,10 @@
 // N threads (2, 4, 8), each with its own query contexts, each running every
 // query kind that takes const handles on both engines over many poses, and
 // every read of the map and the link sets.  Every thread must answer bit
-// for bit what one thread alone answers.  The link sets are made anew for
-// each run and never queried before it, so their lazy work (the tree over
-// shapes added by hand, a mesh placed when first reached) happens while the
+// for bit what one thread alone answers.  The link sets, and a copy of the
+// map for sphere queries, are made anew for each run and never queried
+// before it, so their lazy work (the tree over shapes added by hand, a mesh
+// placed when first reached, the map's obstacle grid) happens while the
 // threads race for it.  Built with -fsanitize=thread it is tsan_threads.
 //
 // Usage: fault_threads [--poses N] [--without-unplaced-links] [thread counts...]
@@ -44,10 +45,13 @@ struct SharedScene {
     opx_linkset *loose = nullptr;     // shapes added by hand, never posed (may be NULL)
     std::vector<std::vector<opx_pose>> paths;
     std::vector<double> boxes;
+    opx_octree *sphere_map = nullptr;  // a copy of tree whose grid the first sphere query builds
+    std::vector<double> spheres;       // x y z radius rows
 
     ~SharedScene() {
         for (opx_linkset *arm : arms) opx_linkset_destroy(arm);
         opx_linkset_destroy(loose);
+        opx_octree_destroy(sphere_map);
     }
 };
 
@@ -85,6 +89,13 @@ std::unique_ptr<SharedScene> make_scene(const opx_octree *tree, const Settings &
     if (settings.unplaced_links) scene->loose = loose_links();
     for (size_t i = 0; i < settings.poses; ++i) scene->paths.push_back(arm_path(scene->arms[0], 3 * i, kWaypoints));
     scene->boxes = room_boxes(300, 21);
+    const std::vector<unsigned char> image = map_image(tree, OPX_FORMAT_OT);
+    require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &scene->sphere_map),
+               "opx_octree_load_memory");
+    Lcg rng(5);
+    for (size_t i = 0; i < 64; ++i)
+        for (double value : {rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.0, 2.5), rng.uniform(0.0, 0.3)})
+            scene->spheres.push_back(value);
     return scene;
 }
 
@@ -148,8 +159,25 @@ void clone_queries(Record &record, const SharedScene &scene) {
     opx_query_destroy(query);
 }
 
+// Spheres one call each, then all in one call, on the map copy.
+void sphere_queries(Record &record, const SharedScene &scene) {
+    opx_query *query = new_query(OPX_ENGINE_DIRECT);
+    const size_t count = scene.spheres.size() / 4;
+    std::vector<uint8_t> collided(count);
+    for (size_t i = 0; i < count; ++i) {
+        record.add("collide_spheres", opx_query_collide_spheres(query, scene.sphere_map, &scene.spheres[4 * i], 1, 0,
+                                                                nullptr, &collided[i], 1));
+        record.add("sphere collided", uint32_t(collided[i]));
+    }
+    record.add("collide_spheres", opx_query_collide_spheres(query, scene.sphere_map, scene.spheres.data(), count, 0,
+                                                            nullptr, collided.data(), count));
+    record.add_bytes("spheres collided", collided.data(), count);
+    opx_query_destroy(query);
+}
+
 Record every_answer(const SharedScene &scene) {
     Record record;
+    sphere_queries(record, scene);
     octree_queries(record, scene, OPX_ENGINE_DIRECT);
     octree_queries(record, scene, OPX_ENGINE_AMORTIZED);
     box_queries(record, scene);

@@ -32,6 +32,7 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_PATH] = op_query_path,
     [OP_QUERY_BOXES] = op_query_boxes,
     [OP_QUERY_READ] = op_query_read,
+    [OP_QUERY_SPHERES] = op_query_spheres,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }

@@ -33,6 +33,7 @@ enum fuzz_api_op {
     OP_QUERY_PATH,
     OP_QUERY_BOXES,
     OP_QUERY_READ,
+    OP_QUERY_SPHERES,
     OP_COUNT
 };
 

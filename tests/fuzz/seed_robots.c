@@ -141,17 +141,20 @@ static void emit_scene(program *p, unsigned char engine) {
 void write_api_seeds(const char *out_dir) {
     static const int tail_ops[][6] = {
         {OP_QUERY_COLLIDE, OP_QUERY_DISTANCE, OP_QUERY_READ, OP_QUERY_PATH, OP_OCTREE_IMAGE, OP_QUERY_BOXES},
-        {OP_LINKSET_SET_POSES, OP_QUERY_DISTANCE, OP_LINKSET_SETTINGS, OP_QUERY_COLLIDE, OP_QUERY_READ,
+        {OP_LINKSET_SET_POSES, OP_QUERY_SPHERES, OP_LINKSET_SETTINGS, OP_QUERY_COLLIDE, OP_QUERY_READ,
          OP_OCTREE_EXERCISE},
         {OP_ROBOT_LOAD, OP_ROBOT_JOINTS, OP_QUERY_COLLIDE, OP_QUERY_PATH, OP_LINKSET_READ, OP_QUERY_DISTANCE},
         {OP_OCTREE_READ, OP_LINKSET_CREATE, OP_OCTREE_DESTROY, OP_QUERY_COLLIDE, OP_OCTREE_CLEAR,
          OP_QUERY_DISTANCE},
+        {OP_QUERY_SPHERES, OP_OCTREE_EXERCISE, OP_QUERY_SPHERES, OP_OCTREE_CLEAR, OP_QUERY_SPHERES,
+         OP_QUERY_COLLIDE},
     };
-    for (size_t s = 0; s < 8; ++s) {
+    const size_t tails = sizeof tail_ops / sizeof tail_ops[0];
+    for (size_t s = 0; s < 2 * tails; ++s) {
         program p = {{0}, 0, (uint32_t)(s + 1)};
         p.bytes[p.size++] = (unsigned char)s; /* the order of the final destruction */
         emit_scene(&p, s % 2 ? 200 : 0);
-        const int *ops = tail_ops[s % 4];
+        const int *ops = tail_ops[s % tails];
         for (int i = 0; i < 6; ++i) {
             if (ops[i] == OP_ROBOT_LOAD) EMIT(&p, OP_ROBOT_LOAD, 0, 0, 0, 0);
             else emit_random(&p, ops[i], 24 + next_random(&p) % 64);

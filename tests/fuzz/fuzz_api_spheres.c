@@ -1,0 +1,121 @@
+/* The sphere operation of the call-sequence fuzzer: spheres against a map
+ * (opx_query_collide_spheres), each checked against the answer of
+ * opx_query_collide for a link set holding that sphere alone.  Between
+ * calls the map may be changed or cleared, so the map's obstacle grid is
+ * built, kept and rebuilt along the way.  See fuzz_api.h. */
+#include "fuzz_api.h"
+
+enum { MAX_SPHERES = 8 };
+
+enum { MAX_LEAVES = 16 };
+
+/* Mostly 2 to 66 cm (a record's end reads zeros: 2 cm); a link set
+ * refuses a radius of 0, which the call under test takes. */
+static double take_radius(fuzz_input *in) {
+    const uint8_t kind = take_u8(in);
+    return kind < 200 ? 0.02 + take_u8(in) / 400.0 : take_double(in);
+}
+
+/* Where spheres go: near the map's first occupied leaves. */
+typedef struct {
+    opx_leaf leaves[MAX_LEAVES];
+    size_t count;
+} sphere_targets;
+
+static void find_targets(const opx_octree *tree, sphere_targets *targets) {
+    size_t total = 0;
+    targets->count = 0;
+    if (tree == NULL) return;
+    const opx_status status = opx_octree_get_leaves(tree, OPX_MASK_OCCUPIED, targets->leaves, MAX_LEAVES, &total);
+    if (status == OPX_OK || status == OPX_ERROR_BUFFER_TOO_SMALL) targets->count = total < MAX_LEAVES ? total : MAX_LEAVES;
+}
+
+/* A row: mostly near an occupied leaf (a record's end reads zeros: at
+ * its centre) or touching one of its faces exactly, else anywhere. */
+static void take_row(fuzz_input *in, const sphere_targets *targets, double row[4]) {
+    row[3] = take_radius(in);
+    const uint8_t kind = take_u8(in);
+    if (targets->count == 0 || kind >= 224) {
+        for (int axis = 0; axis < 3; ++axis) row[axis] = take_double(in);
+        return;
+    }
+    const opx_leaf *leaf = &targets->leaves[take_below(in, targets->count)];
+    for (int axis = 0; axis < 3; ++axis) row[axis] = leaf->center[axis] + (double)(int8_t)take_u8(in) / 200.0;
+    if (kind >= 64 && kind < 128) { /* beyond a face, at exactly the radius */
+        const int axis = kind % 3;
+        row[axis] = leaf->center[axis] + (kind & 4 ? 1 : -1) * (0.5 * leaf->size + row[3]);
+    }
+}
+
+static void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
+    request->struct_size = take_struct_size(in, sizeof *request);
+    const uint8_t policy = take_u8(in);
+    request->unknown_policy = policy < 160 ? OPX_UNKNOWN_FREE : policy < 240 ? OPX_UNKNOWN_OCCUPIED : policy;
+    request->occupancy_threshold = take_u8(in) < 160 ? 0.0 : take_fraction(in);
+    const uint8_t geometry = take_u8(in);
+    request->obstacle_geometry =
+        geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
+}
+
+/* Whether a link set of one sphere (radius, centre) touches the map as
+ * opx_query_collide says; -1 when a call refuses. */
+static int one_sphere_collides(opx_query *query, const opx_octree *tree, const double row[4],
+                               const opx_sphere_request *request) {
+    opx_linkset *links = NULL;
+    uint32_t link = 0;
+    opx_shape shape = OPX_SHAPE_INIT;
+    shape.kind = OPX_SHAPE_SPHERE;
+    shape.radius = row[3];
+    opx_pose pose = OPX_POSE_IDENTITY;
+    for (int axis = 0; axis < 3; ++axis) pose.position[axis] = row[axis];
+    opx_collision_request collision = OPX_COLLISION_REQUEST_INIT;
+    collision.max_contacts = 0;
+    collision.unknown_policy = request->unknown_policy;
+    collision.occupancy_threshold = request->occupancy_threshold;
+    collision.obstacle_geometry = request->obstacle_geometry;
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    int collided = -1;
+    if (opx_linkset_create(&links) == OPX_OK && opx_linkset_add_link(links, "sphere", &link) == OPX_OK &&
+        opx_linkset_add_shape(links, link, &shape, NULL) == OPX_OK &&
+        opx_linkset_set_poses(links, &pose, 1, 0) == OPX_OK &&
+        opx_query_collide(query, tree, links, &collision, &result) == OPX_OK)
+        collided = result.collided;
+    opx_linkset_destroy(links);
+    return collided;
+}
+
+void op_query_spheres(fuzz_api *api) {
+    fuzz_input *in = &api->in;
+    opx_query *query = take_query(api);
+    const opx_octree *tree = take_tree(api);
+    opx_sphere_request request = OPX_SPHERE_REQUEST_INIT;
+    take_sphere_request(in, &request);
+    const int with_request = take_u8(in) < 240;
+    /* Mostly rows the call accepts: one or more, packed. */
+    const uint8_t many = take_u8(in);
+    const size_t count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
+    const size_t stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
+    const size_t step = stride == 0 ? 4 * sizeof(double) : stride;
+    sphere_targets targets;
+    find_targets(tree, &targets);
+    double *rows = calloc(array_bytes(count, stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
+    FUZZ_REQUIRE(rows != NULL);
+    for (size_t i = 0; i < count && step >= 4 * sizeof(double); ++i) {
+        double row[4];
+        take_row(in, &targets, row);
+        memcpy((char *)rows + i * step, row, sizeof row);
+    }
+    uint8_t collided[MAX_SPHERES + 1];
+    const size_t capacity = take_u8(in) < 240 ? count : take_below(in, MAX_SPHERES + 1);
+    const opx_status status = FUZZ_CALL(opx_query_collide_spheres, query, tree, take_u8(in) < 250 ? rows : NULL,
+                                        count, stride, with_request ? &request : NULL, collided, capacity);
+    if (status == OPX_OK && tree != NULL && with_request && request.struct_size == sizeof request) {
+        for (size_t i = 0; i < count; ++i) {
+            double row[4];
+            memcpy(row, (const char *)rows + i * step, sizeof row);
+            const int expected = one_sphere_collides(api->reference[0], tree, row, &request);
+            if (expected >= 0) FUZZ_REQUIRE(collided[i] == expected);
+        }
+    }
+    free(rows);
+}
