@@ -111,10 +111,6 @@ void ObstacleGrid::measure_clearance() {
     }
 }
 
-}  // namespace octoprox
-
-namespace octoprox {
-
 // A grid's index may take this much (5 bytes a brick of 64 cells: a box
 // of 2^30 cells); a larger map's spheres take the descent alone.
 constexpr size_t kMaxGridIndexBytes = size_t(80) << 20;

@@ -2,10 +2,6 @@
 
 #include "narrowphase/narrow_phase.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
-
 namespace octoprox {
 namespace {
 
