@@ -74,12 +74,13 @@ SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int 
                   "opx_query_collide_spheres");
         return collided != 0;
     };
+    auto call = [&](size_t i) { return link_set ? through_link_set(i) : through_spheres_call(i); };
     auto run = [&] {
         size_t collided = 0;
-        for (size_t i = 0; i < poses.size(); ++i) collided += link_set ? through_link_set(i) : through_spheres_call(i);
+        for (size_t i = 0; i < poses.size(); ++i) collided += call(i);
         out.collided = collided;
     };
-    out.first_call_us = 1e3 * paper_tables::time_once_ms([&] { link_set ? through_link_set(0) : through_spheres_call(0); });
+    out.first_call_us = 1e3 * paper_tables::time_once_ms([&] { call(0); });
     run();
     std::vector<double> ns;
     for (int r = 0; r < rounds; ++r) ns.push_back(1e6 * paper_tables::time_once_ms(run) / double(count));

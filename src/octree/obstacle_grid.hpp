@@ -26,9 +26,6 @@ public:
     static std::unique_ptr<ObstacleGrid> build(const OctreeView &view, float threshold, size_t max_index_bytes);
 
     float threshold() const { return threshold_; }
-    size_t memory_bytes() const {
-        return brick_.size() * sizeof(uint32_t) + words_.size() * sizeof(uint64_t) + clearance_.size();
-    }
 
     // A lower bound of the distance, in cells, from any point of the cell
     // at `key` to every obstacle cell: 0 near obstacles and outside the

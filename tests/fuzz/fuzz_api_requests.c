@@ -46,6 +46,15 @@ static double take_error_bound(fuzz_input *in) {
     return kind < 192 ? 0.0 : kind < 240 ? (kind - 192) / 50.0 : take_double(in);
 }
 
+void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
+    request->struct_size = take_struct_size(in, sizeof *request);
+    request->unknown_policy = take_policy(in);
+    request->occupancy_threshold = take_threshold(in);
+    const uint8_t geometry = take_u8(in);
+    request->obstacle_geometry =
+        geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
+}
+
 void take_distance_request(fuzz_input *in, opx_distance_request *request) {
     request->struct_size = take_struct_size(in, sizeof *request);
     request->unknown_policy = take_policy(in);

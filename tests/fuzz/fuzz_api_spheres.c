@@ -4,6 +4,7 @@
  * calls the map may be changed or cleared, so the map's obstacle grid is
  * built, kept and rebuilt along the way.  See fuzz_api.h. */
 #include "fuzz_api.h"
+#include "fuzz_api_requests.h"
 
 enum { MAX_SPHERES = 8 };
 
@@ -45,16 +46,6 @@ static void take_row(fuzz_input *in, const sphere_targets *targets, double row[4
         const int axis = kind % 3;
         row[axis] = leaf->center[axis] + (kind & 4 ? 1 : -1) * (0.5 * leaf->size + row[3]);
     }
-}
-
-static void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
-    request->struct_size = take_struct_size(in, sizeof *request);
-    const uint8_t policy = take_u8(in);
-    request->unknown_policy = policy < 160 ? OPX_UNKNOWN_FREE : policy < 240 ? OPX_UNKNOWN_OCCUPIED : policy;
-    request->occupancy_threshold = take_u8(in) < 160 ? 0.0 : take_fraction(in);
-    const uint8_t geometry = take_u8(in);
-    request->obstacle_geometry =
-        geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
 }
 
 /* Whether a link set of one sphere (radius, centre) touches the map as

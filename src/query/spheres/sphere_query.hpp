@@ -19,9 +19,9 @@ struct SphereSettings {
 // Whether the sphere (centre, radius; map frame) touches an obstacle.
 // With the map's obstacle grid for settings.threshold_log_odds (may be
 // null), the cells around the sphere are read from the grid, and the
-// descent runs only when the grid leaves the answer open (a coarse leaf,
-// point extents, a touch within rounding of the tolerance): the answer is
-// the descent's.  Thread-safe for a map no one changes meanwhile.
+// descent runs only when the grid leaves the answer open (a point extent
+// near the sphere, a cell within rounding of the touch limit, a sphere at
+// the map's faces or wider than 60 cells): the answer is the descent's.  Thread-safe for a map no one changes meanwhile.
 bool sphere_collides(const SensorOctree &tree, const ObstacleGrid *grid, const Vec3 &center, double radius,
                      const SphereSettings &settings);
 
