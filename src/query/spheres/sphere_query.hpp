@@ -21,7 +21,8 @@ struct SphereSettings {
 // null), the cells around the sphere are read from the grid, and the
 // descent runs only when the grid leaves the answer open (a point extent
 // near the sphere, a cell within rounding of the touch limit, a sphere at
-// the map's faces or wider than 60 cells): the answer is the descent's.  Thread-safe for a map no one changes meanwhile.
+// the map's faces or wider than 60 cells): the answer is the descent's.
+// Thread-safe for a map no one changes meanwhile.
 bool sphere_collides(const SensorOctree &tree, const ObstacleGrid *grid, const Vec3 &center, double radius,
                      const SphereSettings &settings);
 
