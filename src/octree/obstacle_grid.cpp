@@ -47,6 +47,7 @@ std::unique_ptr<ObstacleGrid> ObstacleGrid::build(const OctreeView &view, float 
     if (OctreeView::NodeRef root = view.root()) collect_leaves(view, root, CellKey{}, threshold, leaves);
     std::unique_ptr<ObstacleGrid> grid(new ObstacleGrid);
     grid->threshold_ = threshold;
+    grid->cells_per_metre_ = 1.0 / view.resolution();
     if (leaves.empty()) return grid;
 
     int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};

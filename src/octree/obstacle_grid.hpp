@@ -26,10 +26,12 @@ public:
     static std::unique_ptr<ObstacleGrid> build(const OctreeView &view, float threshold, size_t max_index_bytes);
 
     float threshold() const { return threshold_; }
+    // 1 / the map's resolution: the grid's questions are in key units.
+    double cells_per_metre() const { return cells_per_metre_; }
 
     // A lower bound of the distance, in cells, from any point of the cell
-    // at `key` to every obstacle cell: 0 near obstacles and outside the
-    // grid's box.
+    // at `key` to every obstacle cell: 0 near obstacles; outside the
+    // grid's box, the gap to the box.
     int32_t clearance(const int32_t key[3]) const;
 
     // Calls cell(x, y, z) with the key of every finest obstacle cell in
@@ -49,11 +51,15 @@ private:
     static constexpr int kMaxBrickGap = 3;  // brick distances kept: 0 (non-empty) to this
 
     ObstacleGrid() = default;
+    // clearance() of a cell outside the grid's box: its gap to the box,
+    // where every obstacle cell lies.
+    int32_t outside_clearance(const int32_t key[3]) const;
     size_t brick_index(const int32_t cell[3]) const;  // cell relative to origin_
     void fill(const std::vector<Leaf> &leaves);
     void measure_clearance();
 
     float threshold_ = 0.0f;
+    double cells_per_metre_ = 1.0;
     int32_t origin_[3] = {0, 0, 0};  // key of brick (0, 0, 0)'s first cell
     int32_t bricks_[3] = {0, 0, 0};  // bricks per axis
     std::vector<uint32_t> brick_;     // x fastest: 0 empty, else 1 + its word's index
@@ -94,13 +100,24 @@ inline int32_t ObstacleGrid::clearance(const int32_t key[3]) const {
     size_t index = 0;
     for (int axis = 2; axis >= 0; --axis) {
         const int32_t brick = (key[axis] - origin_[axis]) >> 2;
-        if (brick < 0 || brick >= bricks_[axis]) return 0;
+        if (brick < 0 || brick >= bricks_[axis]) return outside_clearance(key);
         index = index * size_t(bricks_[axis]) + size_t(brick);
     }
     // A brick k bricks from the nearest non-empty one (on some axis) is
     // 4 (k - 1) cells from every obstacle cell.
     const int32_t gap = clearance_[index];
     return gap > 0 ? 4 * (gap - 1) : 0;
+}
+
+inline int32_t ObstacleGrid::outside_clearance(const int32_t key[3]) const {
+    int32_t gap = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        // The whole cells between the cell and the box, below it or beyond it.
+        const int32_t below = origin_[axis] - key[axis] - 1;
+        const int32_t above = key[axis] - (origin_[axis] + 4 * bricks_[axis]);
+        gap = std::max(gap, std::max(below, above));
+    }
+    return gap;
 }
 
 template <class CellAnswer>

@@ -17,34 +17,44 @@
 #define ARM_LINKS 11
 #define ARM_PI 3.141592653589793
 
-/* Link k (1..7) of the arm: a cylinder along its z from 0 to 0.24 and a
- * sphere at its far end, each joint 0.24 above the previous one. */
-static inline void append_arm_link(char *xml, size_t size, int k) {
+/* Link k (1..7) of the arm: a cylinder along its z from 0 to 0.24 (with
+ * `spheres`: three spheres along it instead) and a sphere at its far end,
+ * each joint 0.24 above the previous one. */
+static inline void append_arm_link(char *xml, size_t size, int k, int spheres) {
     const size_t used = strlen(xml);
+    const char *body = spheres ? "<collision><origin xyz=\"0 0 0.04\"/><geometry><sphere radius=\"0.035\"/>"
+                                 "</geometry></collision><collision><origin xyz=\"0 0 0.11\"/><geometry>"
+                                 "<sphere radius=\"0.035\"/></geometry></collision><collision><origin "
+                                 "xyz=\"0 0 0.18\"/><geometry><sphere radius=\"0.035\"/></geometry></collision>"
+                               : "<collision><origin xyz=\"0 0 0.12\"/><geometry>"
+                                 "<cylinder radius=\"0.035\" length=\"0.2\"/></geometry></collision>";
     snprintf(xml + used, size - used,
-             " <link name=\"l%d\"><collision><origin xyz=\"0 0 0.12\"/><geometry>"
-             "<cylinder radius=\"0.035\" length=\"0.2\"/></geometry></collision>"
+             " <link name=\"l%d\">%s"
              "<collision><origin xyz=\"0 0 0.24\"/><geometry><sphere radius=\"0.045\"/>"
              "</geometry></collision></link>\n"
              " <joint name=\"j%d\" type=\"revolute\"><parent link=\"l%d\"/><child link=\"l%d\"/>"
              "<origin xyz=\"0 0 %s\"/><axis xyz=\"0 %d %d\"/>"
              "<limit lower=\"-3.14\" upper=\"3.14\" effort=\"1\" velocity=\"1\"/></joint>\n",
-             k, k, k - 1, k, k == 1 ? "0.1" : "0.24", k % 2 == 0, k % 2 == 1);
+             k, body, k, k - 1, k, k == 1 ? "0.1" : "0.24", k % 2 == 0, k % 2 == 1);
 }
 
-/* The arm's URDF, written into `xml` (16 KiB is plenty). */
-static inline void arm_urdf(char *xml, size_t size) {
+/* The arm's URDF, written into `xml` (16 KiB is plenty); with `spheres`,
+ * the same kinematics built of spheres alone (the model of sphere-based
+ * planners). */
+static inline void arm_urdf_of(char *xml, size_t size, int spheres) {
     snprintf(xml, size,
              "<?xml version=\"1.0\"?>\n<robot name=\"arm\">\n"
-             " <link name=\"l0\"><collision><origin xyz=\"0 0 0.05\"/><geometry>"
-             "<box size=\"0.2 0.2 0.1\"/></geometry></collision></link>\n");
-    for (int k = 1; k <= ARM_REVOLUTE; ++k) append_arm_link(xml, size, k);
+             " <link name=\"l0\"><collision><origin xyz=\"0 0 0.05\"/><geometry>%s"
+             "</geometry></collision></link>\n",
+             spheres ? "<sphere radius=\"0.09\"/>" : "<box size=\"0.2 0.2 0.1\"/>");
+    for (int k = 1; k <= ARM_REVOLUTE; ++k) append_arm_link(xml, size, k, spheres);
+    const char *finger = spheres ? "<sphere radius=\"0.012\"/>" : "<box size=\"0.02 0.02 0.06\"/>";
     const size_t used = strlen(xml);
     snprintf(xml + used, size - used,
-             " <link name=\"finger_l\"><collision><origin xyz=\"0 0 0.03\"/><geometry>"
-             "<box size=\"0.02 0.02 0.06\"/></geometry></collision></link>\n"
-             " <link name=\"finger_r\"><collision><origin xyz=\"0 0 0.03\"/><geometry>"
-             "<box size=\"0.02 0.02 0.06\"/></geometry></collision></link>\n"
+             " <link name=\"finger_l\"><collision><origin xyz=\"0 0 0.03\"/><geometry>%s"
+             "</geometry></collision></link>\n"
+             " <link name=\"finger_r\"><collision><origin xyz=\"0 0 0.03\"/><geometry>%s"
+             "</geometry></collision></link>\n"
              " <link name=\"tool\"><collision><geometry><sphere radius=\"0.01\"/></geometry>"
              "</collision></link>\n"
              " <joint name=\"finger_l\" type=\"prismatic\"><parent link=\"l7\"/>"
@@ -56,12 +66,15 @@ static inline void arm_urdf(char *xml, size_t size) {
              "<mimic joint=\"finger_l\" multiplier=\"-1\"/></joint>\n"
              " <joint name=\"tool\" type=\"fixed\"><parent link=\"l7\"/><child link=\"tool\"/>"
              "<origin xyz=\"0 0 0.33\"/></joint>\n"
-             "</robot>\n");
+             "</robot>\n",
+             finger, finger);
 }
 
-static inline opx_linkset *load_arm(void) {
+static inline void arm_urdf(char *xml, size_t size) { arm_urdf_of(xml, size, 0); }
+
+static inline opx_linkset *load_arm_of(int spheres) {
     static char xml[16384];
-    arm_urdf(xml, sizeof xml);
+    arm_urdf_of(xml, sizeof xml, spheres);
     opx_linkset *arm = NULL;
     assert_ok(opx_linkset_load_urdf_string(xml, NULL, &arm));
     uint32_t joints = 0;
@@ -70,6 +83,8 @@ static inline opx_linkset *load_arm(void) {
     assert_int_equal(link_count(arm), ARM_LINKS);
     return arm;
 }
+
+static inline opx_linkset *load_arm(void) { return load_arm_of(0); }
 
 /* Disables the pairs that touch at every configuration, as an SRDF
  * does: each link and the next, the hand's links among themselves. */
@@ -164,6 +179,33 @@ static inline double single_distance(opx_query *query, const opx_octree *tree, o
     opx_distance_request request = OPX_DISTANCE_REQUEST_INIT;
     request.cutoff = cutoff;
     return distance_with(query, tree, robot, &request).distance;
+}
+
+/* ---- Motions: their samples walked with single calls ------------------ */
+
+/* The steps opx_query_check_motion promises: the largest joint move over the
+ * resolution, the mimic finger moving as much as its master. */
+static inline uint64_t motion_steps(const double *a, const double *b, double resolution) {
+    double largest = 0.0;
+    for (int j = 0; j < ARM_REVOLUTE + 1; ++j) largest = fmax(largest, fabs(b[j] - a[j]));
+    const double steps = ceil(largest / resolution);
+    return steps < 1.0 ? 1 : (uint64_t)steps;
+}
+
+static inline void motion_sample(const double *a, const double *b, uint64_t i, uint64_t n, double *q) {
+    for (int j = 0; j < ARM_JOINTS; ++j) q[j] = i == n ? b[j] : a[j] + ((double)i / (double)n) * (b[j] - a[j]);
+}
+
+/* The first colliding sample by walking them all in order; -1: none. */
+static inline int64_t first_colliding_sample(opx_query *query, const opx_octree *tree, opx_linkset *arm,
+                                             const double *a, const double *b, uint64_t n, int self) {
+    double q[ARM_JOINTS];
+    for (uint64_t i = 0; i <= n; ++i) {
+        motion_sample(a, b, i, n, q);
+        if (self ? single_collides_or_self(query, tree, arm, q, NULL) : single_collides(query, tree, arm, q, NULL))
+            return (int64_t)i;
+    }
+    return -1;
 }
 
 /* Every link's pose, to prove a batch did not move the caller's set. */

@@ -11,31 +11,6 @@
 #define MOTIONS 40
 #define RESOLUTION 0.05
 
-/* The steps the header promises: the largest joint move over the
- * resolution, the mimic finger moving as much as its master. */
-static uint64_t expected_steps(const double *a, const double *b, double resolution) {
-    double largest = 0.0;
-    for (int j = 0; j < ARM_REVOLUTE + 1; ++j) largest = fmax(largest, fabs(b[j] - a[j]));
-    const double steps = ceil(largest / resolution);
-    return steps < 1.0 ? 1 : (uint64_t)steps;
-}
-
-static void sample(const double *a, const double *b, uint64_t i, uint64_t n, double *q) {
-    for (int j = 0; j < ARM_JOINTS; ++j) q[j] = i == n ? b[j] : a[j] + ((double)i / (double)n) * (b[j] - a[j]);
-}
-
-/* The first colliding sample by walking them all in order; -1: none. */
-static int64_t brute_force_first(opx_query *query, const opx_octree *tree, opx_linkset *arm, const double *a,
-                                 const double *b, uint64_t n, int self) {
-    double q[ARM_JOINTS];
-    for (uint64_t i = 0; i <= n; ++i) {
-        sample(a, b, i, n, q);
-        if (self ? single_collides_or_self(query, tree, arm, q, NULL) : single_collides(query, tree, arm, q, NULL))
-            return (int64_t)i;
-    }
-    return -1;
-}
-
 static void check_against_brute_force(int self) {
     opx_linkset *arm = load_arm();
     disable_adjacent_arm_pairs(arm);
@@ -50,9 +25,9 @@ static void check_against_brute_force(int self) {
         const double *a = ends + 2 * m * ARM_JOINTS, *b = a + ARM_JOINTS;
         opx_motion_result result = OPX_MOTION_RESULT_INIT;
         assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &request, &result));
-        const uint64_t n = expected_steps(a, b, RESOLUTION);
+        const uint64_t n = motion_steps(a, b, RESOLUTION);
         assert_int_equal(result.steps, n);
-        const int64_t first = brute_force_first(single, tree, arm, a, b, n, self);
+        const int64_t first = first_colliding_sample(single, tree, arm, a, b, n, self);
         assert_int_equal(result.collided, first >= 0);
         assert_true(result.first_collision_fraction == (first < 0 ? -1.0 : (double)first / (double)n));
         assert_true(result.configurations_checked <= n + 1);
@@ -129,7 +104,7 @@ static opx_pose *sample_poses(opx_linkset *arm, const double *a, const double *b
     assert_non_null(poses);
     double q[ARM_JOINTS];
     for (uint64_t i = 0; i <= n; ++i) {
-        sample(a, b, i, n, q);
+        motion_sample(a, b, i, n, q);
         assert_ok(opx_linkset_set_joint_positions(arm, q, ARM_JOINTS, NULL));
         arm_poses(arm, poses + i * ARM_LINKS);
     }
@@ -158,7 +133,7 @@ static void swept_cost_equals_the_path_query(void **state) {
         self_request.self_collision = 1;
         opx_motion_result self_result = OPX_MOTION_RESULT_INIT;
         assert_ok(opx_query_check_motion(query, tree, arm, a, b, ARM_JOINTS, NULL, &self_request, &self_result));
-        const int64_t self_first = brute_force_first(path, tree, arm, a, b, n, 1);
+        const int64_t self_first = first_colliding_sample(path, tree, arm, a, b, n, 1);
         assert_true(self_result.first_collision_fraction == (self_first < 0 ? -1.0 : (double)self_first / (double)n));
         opx_pose *poses = sample_poses(arm, a, b, n);
         opx_path_result expected = OPX_PATH_RESULT_INIT;

@@ -16,6 +16,12 @@ ConfigurationAnswer BatchWorker::check(const SensorOctree *tree, const JointRows
                                        size_t row, const ConfigurationSettings &settings) {
     row_.resize(rows.model_count());
     rows.read(row, row_.data());
+    if (!settings.distance)
+        if (const ObstacleGrid *grid = sphere_grid(tree, settings.collision, settings.self_collision)) {
+            ConfigurationAnswer answer;
+            answer.collided = spheres_collide(*tree, grid, row_.data(), bases.at(row), settings.collision);
+            return answer;
+        }
     const LinkSet &posed = robot_.pose(row_.data(), bases.at(row));
     if (settings.distance) return with_distance(tree, posed, settings);
     ConfigurationAnswer answer;
@@ -25,7 +31,25 @@ ConfigurationAnswer BatchWorker::check(const SensorOctree *tree, const JointRows
 
 bool BatchWorker::collides_at(const SensorOctree *tree, const double *commanded, const Pose &base,
                               const CollisionSettings &collision, bool self_collision) {
+    if (const ObstacleGrid *grid = sphere_grid(tree, collision, self_collision))
+        return spheres_collide(*tree, grid, commanded, base, collision);
     return collides(tree, robot_.pose(commanded, base), collision, self_collision);
+}
+
+const ObstacleGrid *BatchWorker::sphere_grid(const SensorOctree *tree, const CollisionSettings &collision,
+                                             bool self_collision) {
+    if (!spheres_.bound() || tree == nullptr || context_.world() != nullptr || self_collision || collision.cost ||
+        collision.unknown_occupied)
+        return nullptr;
+    return context_.obstacle_grid(*tree, collision.threshold_log_odds);
+}
+
+bool BatchWorker::spheres_collide(const SensorOctree &tree, const ObstacleGrid *grid, const double *commanded,
+                                  const Pose &base, const CollisionSettings &collision) {
+    SphereSettings settings;
+    settings.threshold_log_odds = collision.threshold_log_odds;
+    settings.point_extents = collision.point_extents;
+    return spheres_.collides(tree, grid, robot_.pose_links(commanded, base), settings);
 }
 
 bool BatchWorker::collides(const SensorOctree *tree, const LinkSet &posed, const CollisionSettings &collision,
@@ -72,6 +96,7 @@ void BatchWorkers::prepare(size_t count, const LinkSet &links, const JointTree &
     while (workers_.size() < count) workers_.push_back(std::make_unique<BatchWorker>(options_));
     for (size_t i = 0; i < count; ++i) {
         workers_[i]->robot().bind(links, joints);
+        workers_[i]->bind_spheres();
         workers_[i]->context().set_world(world);
     }
 }

@@ -13,6 +13,7 @@
 
 #include "query/batch/batch_types.hpp"
 #include "query/batch/posed_robot.hpp"
+#include "query/batch/sphere_robot.hpp"
 #include "query/context.hpp"
 
 #include <memory>
@@ -25,6 +26,9 @@ public:
     explicit BatchWorker(const ContextOptions &options) : context_(options) {}
 
     PosedRobot &robot() { return robot_; }
+    // After robot().bind(): reads the posed copy's spheres, if it is made
+    // of spheres alone.
+    void bind_spheres() { spheres_.bind(robot_.links()); }
     QueryContext &context() { return context_; }
 
     // Row `row` of `rows` at its base pose: collided (world, and self with
@@ -37,6 +41,13 @@ public:
                      const CollisionSettings &collision, bool self_collision);
 
 private:
+    // The map's obstacle grid when a check may place the robot's spheres
+    // alone (a robot of spheres, the octree only, yes or no without cost
+    // or unknown space as obstacle), else null.
+    const ObstacleGrid *sphere_grid(const SensorOctree *tree, const CollisionSettings &collision,
+                                    bool self_collision);
+    bool spheres_collide(const SensorOctree &tree, const ObstacleGrid *grid, const double *commanded,
+                         const Pose &base, const CollisionSettings &collision);
     bool collides(const SensorOctree *tree, const LinkSet &posed, const CollisionSettings &collision,
                   bool self_collision);
     ConfigurationAnswer with_distance(const SensorOctree *tree, const LinkSet &posed,
@@ -45,6 +56,7 @@ private:
 
     QueryContext context_;
     PosedRobot robot_;
+    SphereRobot spheres_;
     std::vector<double> row_;  // one configuration copied from the caller
 };
 

@@ -18,11 +18,15 @@ void PosedRobot::bind(const LinkSet &links, const JointTree &joints) {
 }
 
 const LinkSet &PosedRobot::pose(const double *commanded, const Pose &base) {
+    copy_->set_poses(pose_links(commanded, base));
+    return *copy_;
+}
+
+const std::vector<Pose> &PosedRobot::pose_links(const double *commanded, const Pose &base) {
     positions_.swap(previous_);
     joints_->positions_from(commanded, positions_.data());
     forward_kinematics(base);
-    copy_->set_poses(poses_);
-    return *copy_;
+    return poses_;
 }
 
 void PosedRobot::forward_kinematics(const Pose &base) {

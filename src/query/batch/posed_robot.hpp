@@ -23,6 +23,9 @@ public:
     // FK at `commanded` (joint_count() values, model order) with the root
     // link at `base` (map frame); the copy's links take the poses.
     const LinkSet &pose(const double *commanded, const Pose &base);
+    // FK alone: the link poses at `commanded` (link order), the copy's
+    // shapes left where they were.  A later pose() places what moved.
+    const std::vector<Pose> &pose_links(const double *commanded, const Pose &base);
 
     // Every joint's position FK uses for `commanded` (mimic joints
     // resolved; fixed, floating and planar joints 0).

@@ -5,11 +5,6 @@
 namespace octoprox {
 namespace {
 
-// Cells are placed in key units (a cell is [k, k + 1] on each axis), where
-// the map's coordinates carry rounding of at most 1e-11: a cell farther
-// than this from the touch limit is decided there, for the descent's tests
-// on its boxes decide it the same way.
-constexpr double kKeyMargin = 1e-8;
 // The cells read around a sphere: those within its touch limit and this
 // much more (key units), far more than any rounding of the centre.
 constexpr double kKeyReach = 1e-6;
@@ -19,9 +14,10 @@ constexpr int kMaxSpan = 64;
 
 }  // namespace
 
-GridAnswer sphere_on_grid(const ObstacleGrid &grid, const Vec3 &center, double radius, double resolution,
-                          bool point_extents) {
-    const double per_cell = 1.0 / resolution;
+GridAnswer sphere_on_grid(const ObstacleGrid &grid, const Vec3 &center, double radius, bool point_extents) {
+    // Most spheres far from every obstacle are answered by one byte.
+    if (sphere_surely_clear(grid, center, radius)) return GridAnswer::kNo;
+    const double per_cell = grid.cells_per_metre();
     int32_t lo[3], hi[3], key[3];
     double at[3];  // the centre in key units
     const double reach = (radius + kTouchTolerance) * per_cell + kKeyReach;
@@ -34,13 +30,11 @@ GridAnswer sphere_on_grid(const ObstacleGrid &grid, const Vec3 &center, double r
         hi[axis] = static_cast<int32_t>(high);
         key[axis] = static_cast<int32_t>(at[axis]);
     }
-    const double limit = (radius + kTouchTolerance) * per_cell + kKeyMargin;
-    // Most points far from every obstacle are answered by their brick.
-    if (grid.clearance(key) > limit) return GridAnswer::kNo;
+    const double limit = (radius + kTouchTolerance) * per_cell + kGridKeyMargin;
     // Surely touching: the ball itself (not only its tolerance) reaches
     // into the cell, so the sphere's box overlaps the cell as well.
     const double ball = radius * per_cell;
-    const double sure_in = ball > kKeyMargin ? (ball - kKeyMargin) * (ball - kKeyMargin) : -1.0;
+    const double sure_in = ball > kGridKeyMargin ? (ball - kGridKeyMargin) * (ball - kGridKeyMargin) : -1.0;
     const double sure_out = limit * limit;
     return grid.ask_cells(lo, hi, [&](int32_t x, int32_t y, int32_t z) {
         // The squared distance, in key units, from the centre to the cell.

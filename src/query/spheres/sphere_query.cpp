@@ -138,8 +138,7 @@ __attribute__((noinline)) bool descend(const SensorOctree &tree, const Vec3 &cen
 bool sphere_collides(const SensorOctree &tree, const ObstacleGrid *grid, const Vec3 &center, double radius,
                      const SphereSettings &settings) {
     if (grid != nullptr && !settings.unknown_occupied && grid->threshold() == settings.threshold_log_odds) {
-        const GridAnswer answer =
-            sphere_on_grid(*grid, center, radius, tree.params().resolution, settings.point_extents);
+        const GridAnswer answer = sphere_on_grid(*grid, center, radius, settings.point_extents);
         if (answer != GridAnswer::kUndecided) return answer == GridAnswer::kYes;
     }
     return descend(tree, center, radius, settings);
