@@ -174,6 +174,60 @@ private:
     uint8_t collided_[kSpheres] = {};
 };
 
+// An arm of spheres alone (three links, two joints), whose batch reads
+// the map's obstacle grid.
+const char kSphereArmUrdf[] =
+    "<?xml version=\"1.0\"?><robot name=\"sphere_arm\">"
+    "<link name=\"base\"><collision><origin xyz=\"0 0 0.1\"/><geometry><sphere radius=\"0.12\"/></geometry>"
+    "</collision></link>"
+    "<link name=\"upper\"><collision><origin xyz=\"0.2 0 0\"/><geometry><sphere radius=\"0.08\"/></geometry>"
+    "</collision><collision><origin xyz=\"0.45 0 0\"/><geometry><sphere radius=\"0.06\"/></geometry>"
+    "</collision></link>"
+    "<link name=\"fore\"><collision><origin xyz=\"0.25 0 0\"/><geometry><sphere radius=\"0.07\"/></geometry>"
+    "</collision></link>"
+    "<joint name=\"yaw\" type=\"continuous\"><parent link=\"base\"/><child link=\"upper\"/>"
+    "<origin xyz=\"0 0 0.3\"/><axis xyz=\"0 0 1\"/></joint>"
+    "<joint name=\"pitch\" type=\"continuous\"><parent link=\"upper\"/><child link=\"fore\"/>"
+    "<origin xyz=\"0.5 0 0\"/><axis xyz=\"0 1 0\"/></joint></robot>";
+
+// A batch of the sphere arm on 2 threads against a map of the attempt's
+// own: the first configuration of each worker asks for the obstacle grid,
+// which one of them builds.  Failed, the call leaves the map as it was.
+class SphereBatchAttempt : public Attempt {
+public:
+    SphereBatchAttempt() : query_(new_query(OPX_ENGINE_DIRECT)) {
+        static const std::vector<unsigned char> image = map_image(shared_map(), OPX_FORMAT_OT);
+        require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &tree_), "opx_octree_load_memory");
+        require_ok(opx_linkset_load_urdf_string(kSphereArmUrdf, nullptr, &arm_), "opx_linkset_load_urdf_string");
+        Lcg rng(13);
+        for (size_t i = 0; i < 2 * kRows; ++i) rows_.push_back(rng.uniform(-3.0, 3.0));
+    }
+    ~SphereBatchAttempt() override {
+        opx_query_destroy(query_);
+        opx_linkset_destroy(arm_);
+        opx_octree_destroy(tree_);
+    }
+    opx_status call() override {
+        opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+        request.max_threads = 2;
+        const opx_pose base = {{-1.0, 0.5, 0.2}, {0.0, 0.0, 0.0, 1.0}};
+        return opx_query_check_configurations(query_, tree_, arm_, rows_.data(), kRows, 2, 0, &base, 1, 0, &request,
+                                              collided_, nullptr, kRows);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override {
+        for (size_t i = 0; i < kRows; ++i) record.add("configuration collided", uint32_t(collided_[i]));
+    }
+
+private:
+    static constexpr size_t kRows = 48;
+    opx_query *query_;
+    opx_octree *tree_ = nullptr;
+    opx_linkset *arm_ = nullptr;
+    std::vector<double> rows_;
+    uint8_t collided_[kRows] = {};
+};
+
 std::string case_name(const std::string &what, int32_t engine, Stage stage) {
     return what + (engine == OPX_ENGINE_DIRECT ? " direct " : " amortized ") + stage_name(stage);
 }
@@ -200,6 +254,8 @@ std::vector<SweepCase> query_cases() {
     }
     cases.push_back({"opx_query_collide_spheres on a new map",
                      [] { return std::unique_ptr<Attempt>(new SpheresAttempt()); }, {}});
+    cases.push_back({"opx_query_check_configurations of a sphere arm on a new map",
+                     [] { return std::unique_ptr<Attempt>(new SphereBatchAttempt()); }, {}});
     return cases;
 }
 
