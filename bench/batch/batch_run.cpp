@@ -74,7 +74,8 @@ bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const Run
 void sphere_rows(Robot &arm, const Scene &scene, const RunOptions &options, std::vector<Row> &rows) {
     const SphereArmTiming a = time_sphere_arm(arm, scene, options.configurations, options.rounds);
     rows.push_back(Row{arm.name, scene.name, "batch 1 thread", a.us_per_configuration,
-                       {{"ns_per_sphere", a.ns_per_sphere}, {"configurations", double(a.configurations)},
+                       {{"ns_per_sphere", a.ns_per_sphere}, {"first_call_us", a.first_call_us},
+                        {"configurations", double(a.configurations)},
                         {"collided", double(a.collided)}}});
     const SphereCallTiming s = time_single_sphere_calls(scene, options.configurations, options.rounds, false);
     rows.push_back(Row{"sphere", scene.name, "single sphere call", s.ns_per_call / 1000.0,

@@ -11,6 +11,7 @@ namespace batch_bench {
 
 struct SphereArmTiming {
     double us_per_configuration = 0.0, ns_per_sphere = 0.0;
+    double first_call_us = 0.0;  // one configuration on a new map (its obstacle grid built)
     size_t configurations = 0, collided = 0;
 };
 
@@ -24,7 +25,8 @@ struct SphereCallTiming {
     size_t calls = 0, collided = 0;
 };
 
-// Spheres of 5 cm radius uniform in the box of the occupied cells;
+// Spheres of 5 cm radius uniform in the box of the occupied cells, on a
+// copy of the scene's map of their own (the first call builds its grid);
 // `link_set`: through a one-sphere link set, else opx_query_collide_spheres.
 SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds, bool link_set);
 

@@ -50,6 +50,15 @@
  * compute_cost, which leaves them as opx_query_path does (its cost boxes,
  * no contacts).
  *
+ * Robots of spheres: a link set whose every collision shape is a sphere
+ * (attached objects' too), asked for collisions with the octree alone (no
+ * distance, self_collision, world or cost; unknown space free), is
+ * checked sphere by sphere on the map's obstacle grid, as
+ * opx_query_collide_spheres checks spheres (spheres.h), with the same
+ * answers: about 10 ns a sphere at 2 cm.  The first such call after the
+ * map changed builds the grid (some hundred microseconds for a 640x480
+ * frame at 2 cm); the map keeps it for every later call and thread.
+ *
  * Arrays: joint vectors are rows of joint_count doubles, `stride` bytes
  * apart (0: packed, joint_count * 8 bytes); base poses are opx_pose
  * elements `base_pose_stride` bytes apart (0: packed).  base_pose_count 0
