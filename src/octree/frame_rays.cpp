@@ -55,15 +55,17 @@ private:
 
 // Once a point: inlined at both calls (GCC keeps one out-of-line copy otherwise).
 inline __attribute__((always_inline)) void add_ray(const octomap::point3d &end, const octomap::OcTreeKey &key,
-                                                   FrameRays &rays) {
+                                                   RaySegment &rays, KeyBox &box) {
     rays.ends.push_back(end);
     rays.end_keys.push_back(key);
     const uint32_t k[3] = {key[0], key[1], key[2]};
-    rays.box.grow(k);
+    box.grow(k);
 }
 
 struct RayPart {
-    FrameRays rays;
+    RaySegment rays;
+    std::vector<CellExtent> hit_extents;
+    KeyBox box;
     InsertCounts counts;
 };
 
@@ -122,16 +124,15 @@ void merge_same_cells(std::vector<CellExtent> &extents) {
     extents.resize(kept);
 }
 
-// The rays of points [begin, end), in lists with room for `room` rays.
+// The rays of points [begin, end).
 void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
-                  const octomap::point3d &origin, size_t begin, size_t end, size_t room, RayPart &part) {
+                  const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
     const bool limited = settings.max_range > 0.0 && std::isfinite(settings.max_range);
-    FrameRays &rays = part.rays;
+    RaySegment &rays = part.rays;
     InsertCounts &counts = part.counts;
-    rays.ends.reserve(room);
-    rays.end_keys.reserve(room);
-    rays.hit_keys.reserve(room);
-    ExtentRuns extents(mapper.resolution(), rays.hit_extents);
+    rays.ends.reserve(end - begin);
+    rays.end_keys.reserve(end - begin);
+    ExtentRuns extents(mapper.resolution(), part.hit_extents);
     octomap::OcTreeKey key;
     for (size_t i = begin; i < end; ++i) {
         const Vec3 p_sensor = points.read(i);
@@ -146,21 +147,27 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
             ++counts.out_of_range;
             if (!settings.raycast) continue;
             const octomap::point3d cut = origin + (p - origin).normalized() * static_cast<float>(settings.max_range);
-            if (mapper.key(cut, key)) add_ray(cut, key, rays);
+            if (!mapper.key(cut, key)) continue;
+            rays.cut.push_back(static_cast<uint32_t>(rays.ends.size()));
+            add_ray(cut, key, rays, part.box);
             continue;
         }
         if (!mapper.key(p, key)) {
             ++counts.outside_map;
             continue;
         }
-        add_ray(p, key, rays);
-        rays.hit_keys.push_back(key);
+        add_ray(p, key, rays, part.box);
         extents.add(key, p_map);
         ++counts.used;
     }
     extents.flush();
-    std::sort(rays.hit_extents.begin(), rays.hit_extents.end(), ByCode());
-    merge_same_cells(rays.hit_extents);
+    std::sort(part.hit_extents.begin(), part.hit_extents.end(), ByCode());
+    merge_same_cells(part.hit_extents);
+}
+
+template <class T>
+void append(std::vector<T> &to, const std::vector<T> &from) {
+    to.insert(to.end(), from.begin(), from.end());
 }
 
 // Rays whose ends lie close together cross nearly the same cells on their
@@ -169,11 +176,17 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
 // rays reach across the whole frame) do not once the marks outgrow it.
 // The walk's result does not depend on the order.
 void order_by_end(FrameRays &rays) {
-    const size_t count = rays.ends.size();
+    RaySegment all;
+    for (const RaySegment &segment : rays.segments) {
+        for (const uint32_t cut : segment.cut) all.cut.push_back(static_cast<uint32_t>(all.ends.size()) + cut);
+        append(all.ends, segment.ends);
+        append(all.end_keys, segment.end_keys);
+    }
+    const size_t count = all.ends.size();
     std::vector<uint64_t> codes(count);
     std::vector<uint32_t> order(count);
     for (size_t i = 0; i < count; ++i) {
-        const octomap::OcTreeKey &key = rays.end_keys[i];
+        const octomap::OcTreeKey &key = all.end_keys[i];
         codes[i] = morton_encode(key[0], key[1], key[2]);
         order[i] = static_cast<uint32_t>(i);
     }
@@ -181,19 +194,18 @@ void order_by_end(FrameRays &rays) {
     RadixSortOptions options;
     options.key_bits = 48;
     radix_sort(codes, order, scratch, options);
-    std::vector<octomap::point3d> ends(count);
-    std::vector<octomap::OcTreeKey> end_keys(count);
+    std::vector<uint8_t> is_cut(all.cut.empty() ? 0 : count, 0);
+    for (const uint32_t cut : all.cut) is_cut[cut] = 1;
+    RaySegment sorted;
+    sorted.ends.resize(count);
+    sorted.end_keys.resize(count);
     for (size_t i = 0; i < count; ++i) {
-        ends[i] = rays.ends[order[i]];
-        end_keys[i] = rays.end_keys[order[i]];
+        sorted.ends[i] = all.ends[order[i]];
+        sorted.end_keys[i] = all.end_keys[order[i]];
+        if (!is_cut.empty() && is_cut[order[i]]) sorted.cut.push_back(static_cast<uint32_t>(i));
     }
-    rays.ends = std::move(ends);
-    rays.end_keys = std::move(end_keys);
-}
-
-template <class T>
-void append(std::vector<T> &to, const std::vector<T> &from) {
-    to.insert(to.end(), from.begin(), from.end());
+    rays.segments.clear();
+    rays.segments.push_back(std::move(sorted));
 }
 
 }  // namespace
@@ -206,30 +218,29 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
     const bool origin_inside = mapper.key(origin, origin_key);
     if (settings.raycast && !origin_inside) throw_invalid("sensor_pose.position lies outside the map cube");
 
-    // The first part's lists become the frame's: they have room for every
-    // point, so the other parts are appended without moving them.
     std::vector<RayPart> parts(threads);
     run_tasks(threads, [&](size_t i) {
         const size_t begin = points.count * i / threads, end = points.count * (i + 1) / threads;
-        prepare_part(mapper, points, settings, origin, begin, end, i == 0 ? points.count : end - begin, parts[i]);
+        prepare_part(mapper, points, settings, origin, begin, end, parts[i]);
     });
-    FrameRays rays = std::move(parts[0].rays);
+    FrameRays rays;
     rays.origin = origin;
     rays.origin_key = origin_key;
     if (settings.raycast) {
         const uint32_t k[3] = {origin_key[0], origin_key[1], origin_key[2]};
         rays.box.grow(k);
     }
-    for (size_t i = 1; i < threads; ++i) {
-        append(rays.ends, parts[i].rays.ends);
-        append(rays.end_keys, parts[i].rays.end_keys);
-        append(rays.hit_keys, parts[i].rays.hit_keys);
-        const size_t before = rays.hit_extents.size();
-        append(rays.hit_extents, parts[i].rays.hit_extents);
-        // Each part's entries are sorted (and merged) already.
-        std::inplace_merge(rays.hit_extents.begin(), rays.hit_extents.begin() + static_cast<std::ptrdiff_t>(before),
-                           rays.hit_extents.end(), ByCode());
-        rays.box.grow(parts[i].rays.box);
+    rays.hit_extents = std::move(parts[0].hit_extents);
+    for (size_t i = 0; i < threads; ++i) {
+        rays.box.grow(parts[i].box);
+        if (i > 0) {
+            // Each part's entries are sorted (and merged) already.
+            const size_t before = rays.hit_extents.size();
+            append(rays.hit_extents, parts[i].hit_extents);
+            std::inplace_merge(rays.hit_extents.begin(), rays.hit_extents.begin() + static_cast<std::ptrdiff_t>(before),
+                               rays.hit_extents.end(), ByCode());
+        }
+        if (!parts[i].rays.ends.empty()) rays.segments.push_back(std::move(parts[i].rays));
     }
     if (threads > 1) merge_same_cells(rays.hit_extents);
     if (settings.raycast && rays.box.volume() > kOrderedAboveCells) order_by_end(rays);

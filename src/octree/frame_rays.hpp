@@ -15,18 +15,45 @@
 
 namespace octoprox {
 
+// The rays of one run of the frame's points (one per thread that
+// prepared them), in the points' order: each ray's end and its key.  The
+// ends are occupied cells but those of `cut` (rays cut at max_range).
+struct RaySegment {
+    std::vector<octomap::point3d> ends;
+    std::vector<octomap::OcTreeKey> end_keys;
+    std::vector<uint32_t> cut;  // ascending
+};
+
 struct FrameRays {
     octomap::point3d origin;
     octomap::OcTreeKey origin_key;  // meaningful in ray-cast mode (the origin lies in the map)
-    // Every ray's end and its key (in no particular order), and the keys
-    // of the ends that are occupied cells (rays cut at max_range have none).
-    std::vector<octomap::point3d> ends;
-    std::vector<octomap::OcTreeKey> end_keys;
-    std::vector<octomap::OcTreeKey> hit_keys;
+    // The segments stay apart: joining them would copy every ray once
+    // more, on one thread, into memory touched for the first time.
+    std::vector<RaySegment> segments;
     // The extent of the points in each occupied end cell, ascending by
     // Morton code, one entry a cell (point_extent.hpp).
     std::vector<CellExtent> hit_extents;
-    KeyBox box;                               // keys of the origin and every end
+    KeyBox box;  // keys of the origin and every end
+
+    size_t ray_count() const {
+        size_t count = 0;
+        for (const RaySegment &segment : segments) count += segment.ends.size();
+        return count;
+    }
+    // Calls hit(key) with the key of every end that is an occupied cell.
+    template <class Hit>
+    void for_each_hit(Hit &&hit) const {
+        for (const RaySegment &segment : segments) {
+            auto cut = segment.cut.begin();
+            for (uint32_t i = 0; i < segment.end_keys.size(); ++i) {
+                if (cut != segment.cut.end() && *cut == i) {
+                    ++cut;
+                    continue;
+                }
+                hit(segment.end_keys[i]);
+            }
+        }
+    }
 };
 
 // Throws ApiError(INVALID_ARGUMENT) when the sensor lies outside the map.

@@ -32,22 +32,40 @@ constexpr uint32_t kBoxPadding = 8;
 // counter, so threads that get short rays take more of them.
 struct RayWorker {
     FrameMarks marks;
-    std::vector<uint32_t> strays;  // rays that might leave the marks' box
+    std::vector<std::vector<uint32_t>> strays;  // per segment: rays that might leave the marks' box
 };
+
+// A chunk of rays: part of one segment.
+struct RayChunk {
+    uint32_t segment;
+    size_t begin, end;
+};
+
+std::vector<RayChunk> ray_chunks(const FrameRays &rays) {
+    std::vector<RayChunk> chunks;
+    for (uint32_t s = 0; s < rays.segments.size(); ++s)
+        for (size_t begin = 0, size = rays.segments[s].ends.size(); begin < size; begin += kRaysPerChunk)
+            chunks.push_back(RayChunk{s, begin, std::min(size, begin + kRaysPerChunk)});
+    return chunks;
+}
 
 class RayCast {
 public:
     RayCast(const BoundedOcTree &tree, const FrameRays &rays, const KeyBox &box)
-        : rays_(rays), box_(box), walker_(tree, rays.origin, rays.origin_key) {}
+        : rays_(rays), box_(box), walker_(tree, rays.origin, rays.origin_key), chunks_(ray_chunks(rays)) {}
+
+    size_t chunk_count() const { return chunks_.size(); }
 
     void run(RayWorker &worker) {
         worker.marks.reset(box_);
-        const size_t total = rays_.ends.size();
+        worker.strays.resize(rays_.segments.size());
         for (;;) {
-            const size_t begin = next_.fetch_add(kRaysPerChunk, std::memory_order_relaxed);
-            if (begin >= total) break;
-            const size_t end = std::min(total, begin + kRaysPerChunk);
-            walker_.walk(rays_.ends, rays_.end_keys, begin, end, worker.marks, worker.strays);
+            const size_t next = next_.fetch_add(1, std::memory_order_relaxed);
+            if (next >= chunks_.size()) break;
+            const RayChunk &chunk = chunks_[next];
+            const RaySegment &segment = rays_.segments[chunk.segment];
+            walker_.walk(segment.ends, segment.end_keys, chunk.begin, chunk.end, worker.marks,
+                         worker.strays[chunk.segment]);
         }
     }
 
@@ -55,15 +73,16 @@ private:
     const FrameRays &rays_;
     const KeyBox box_;
     RayWalker walker_;
+    const std::vector<RayChunk> chunks_;
     std::atomic<size_t> next_{0};
 };
 
 void mark_endpoints(const FrameRays &rays, FrameMarks &marks) {
     marks.add_endpoint_marks();
-    for (const octomap::OcTreeKey &key : rays.hit_keys) {
+    rays.for_each_hit([&](const octomap::OcTreeKey &key) {
         const uint32_t k[3] = {key[0], key[1], key[2]};
         marks.mark_endpoint(marks.bit_of(k));
-    }
+    });
 }
 
 // OctoMap's own ray for the few rays that graze the map's outer faces.
@@ -72,10 +91,11 @@ std::vector<uint64_t> stray_cells(const BoundedOcTree &tree, const FrameRays &ra
     std::vector<uint64_t> cells;
     octomap::KeyRay ray;
     for (const RayWorker &w : workers)
-        for (const uint32_t index : w.strays) {
-            if (!tree.computeRayKeys(rays.origin, rays.ends[index], ray)) continue;
-            for (const octomap::OcTreeKey &key : ray) cells.push_back(morton_encode(key[0], key[1], key[2]));
-        }
+        for (size_t s = 0; s < w.strays.size(); ++s)
+            for (const uint32_t index : w.strays[s]) {
+                if (!tree.computeRayKeys(rays.origin, rays.segments[s].ends[index], ray)) continue;
+                for (const octomap::OcTreeKey &key : ray) cells.push_back(morton_encode(key[0], key[1], key[2]));
+            }
     return cells;
 }
 
@@ -83,11 +103,13 @@ std::vector<uint64_t> stray_cells(const BoundedOcTree &tree, const FrameRays &ra
 // hundreds of metres apart at a fine resolution) take OctoMap's way: a set
 // of keys per ray step, then sorted.
 FrameCells keyset_cells(const BoundedOcTree &tree, const FrameRays &rays, bool raycast) {
-    octomap::KeySet free_cells, occupied_cells(rays.hit_keys.begin(), rays.hit_keys.end());
+    octomap::KeySet free_cells, occupied_cells;
+    rays.for_each_hit([&](const octomap::OcTreeKey &key) { occupied_cells.insert(key); });
     octomap::KeyRay ray;
     if (raycast)
-        for (const octomap::point3d &end : rays.ends)
-            if (tree.computeRayKeys(rays.origin, end, ray)) free_cells.insert(ray.begin(), ray.end());
+        for (const RaySegment &segment : rays.segments)
+            for (const octomap::point3d &end : segment.ends)
+                if (tree.computeRayKeys(rays.origin, end, ray)) free_cells.insert(ray.begin(), ray.end());
     std::vector<uint64_t> cells;
     cells.reserve(free_cells.size() + occupied_cells.size());
     for (const octomap::OcTreeKey &key : occupied_cells)
@@ -99,8 +121,8 @@ FrameCells keyset_cells(const BoundedOcTree &tree, const FrameRays &rays, bool r
 FrameCells raycast_cells(const BoundedOcTree &tree, const FrameRays &rays, uint32_t max_threads) {
     const KeyBox box = rays.box.padded(kBoxPadding);
     if (box.volume() > FrameMarks::kMaxCells) return keyset_cells(tree, rays, true);
-    std::vector<RayWorker> workers(task_count(max_threads, (rays.ends.size() + kRaysPerChunk - 1) / kRaysPerChunk));
     RayCast cast(tree, rays, box);
+    std::vector<RayWorker> workers(task_count(max_threads, cast.chunk_count()));
     run_tasks(workers.size(), [&](size_t i) { cast.run(workers[i]); });
     FrameMarks &marks = workers[0].marks;
     for (size_t i = 1; i < workers.size(); ++i) marks.merge_crossed(workers[i].marks);
