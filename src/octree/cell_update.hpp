@@ -83,6 +83,14 @@ public:
             update_leaf(node, created, *first);
             return true;
         }
+        // A new node whose every cell misses ends as one leaf of the value
+        // of one miss: OctoMap makes each cell such a leaf, then prunes
+        // them into the node level by level.  Most of a large frame's free
+        // space goes in this way, without a node below the one kept.
+        if (created && all_cells_missed(depth, first, last)) {
+            update_leaf(node, true, *first);
+            return true;
+        }
         if (!opened(node, depth, created, first, last)) return false;
         bool changed = false;
         while (first != last) {
@@ -98,6 +106,15 @@ public:
     }
 
 private:
+    // Whether the cells [first, last), all inside one node at `depth` and
+    // each there once, are every cell of that node, and all misses.
+    static bool all_cells_missed(int depth, const uint64_t *first, const uint64_t *last) {
+        if (static_cast<uint64_t>(last - first) != uint64_t{1} << (3 * (kDepth - depth))) return false;
+        for (; first != last; ++first)
+            if (FrameCells::is_hit(*first)) return false;
+        return true;
+    }
+
     // OctoMap's early exit: the leaf holding the cell is clamped in the
     // direction of the cell's update.
     bool clamped_for(const BoundedNode *leaf, uint64_t cell) const {
