@@ -85,10 +85,12 @@ public:
         }
         // A new node whose every cell misses ends as one leaf of the value
         // of one miss: OctoMap makes each cell such a leaf, then prunes
-        // them into the node level by level.  Most of a large frame's free
-        // space goes in this way, without a node below the one kept.
-        if (created && all_cells_missed(depth, first, last)) {
-            update_leaf(node, true, *first);
+        // them into the node level by level.  A free leaf above the finest
+        // depth whose every cell misses ends the same way, one miss lower.
+        // Most of a large frame's free space goes in so, without a node
+        // below the one kept.
+        if ((created || misses_keep_one_leaf(node)) && all_cells_missed(depth, first, last)) {
+            update_leaf(node, created, *first);
             return true;
         }
         if (!opened(node, depth, created, first, last)) return false;
@@ -113,6 +115,15 @@ private:
         for (; first != last; ++first)
             if (FrameCells::is_hit(*first)) return false;
         return true;
+    }
+
+    // A leaf above the finest depth (pruned) that one more miss in every
+    // cell changes alike, each cell as the leaf: free or uncertain (no
+    // point extent to keep) and not clamped (else OctoMap leaves it alone).
+    bool misses_keep_one_leaf(const BoundedNode *node) const {
+        if (tree_.nodeHasChildren(node)) return false;
+        const float value = node->getLogOdds();
+        return value < occupied_ && value > clamp_min_;
     }
 
     // OctoMap's early exit: the leaf holding the cell is clamped in the
