@@ -96,6 +96,24 @@ static opx_linkset *sphere_arm(const sphere_case *c) {
     return arm;
 }
 
+/* The sphere arm of a case, a reach map and ROWS random rows. */
+typedef struct sphere_scene {
+    opx_linkset *arm;
+    opx_octree *tree;
+    double *rows;
+} sphere_scene;
+
+static sphere_scene open_scene(const sphere_case *c, uint64_t map_seed, uint64_t rows_seed, size_t rows) {
+    const sphere_scene scene = {sphere_arm(c), new_reach_map(map_seed), random_arm_rows(rows, rows_seed)};
+    return scene;
+}
+
+static void close_scene(sphere_scene *scene) {
+    free(scene->rows);
+    opx_octree_destroy(scene->tree);
+    opx_linkset_destroy(scene->arm);
+}
+
 /* Every row of the batch equals its single call; returns the colliding rows. */
 static int check_rows(const sphere_case *c, opx_linkset *arm, const opx_octree *tree, const double *rows) {
     opx_query *query = new_query_with(c->engine), *single = new_query();
@@ -114,15 +132,10 @@ static int check_rows(const sphere_case *c, opx_linkset *arm, const opx_octree *
 }
 
 static void check_case(const sphere_case *c) {
-    opx_linkset *arm = sphere_arm(c);
-    opx_octree *tree = new_reach_map(5);
-    double *rows = random_arm_rows(ROWS, 17);
-    const int hits = check_rows(c, arm, tree, rows);
-    print_message("%d of %d rows collide\n", hits, ROWS);
+    sphere_scene scene = open_scene(c, 5, 17, ROWS);
+    const int hits = check_rows(c, scene.arm, scene.tree, scene.rows);
     assert_true(hits > ROWS / 20 && hits < ROWS * 19 / 20); /* near surfaces: both answers occur */
-    free(rows);
-    opx_octree_destroy(tree);
-    opx_linkset_destroy(arm);
+    close_scene(&scene);
 }
 
 static void equals_single_calls(void **state) {
@@ -144,59 +157,47 @@ static void equals_single_calls_every_setting(void **state) {
     const sphere_case strict = {OPX_ENGINE_DIRECT, 2, 0.0, OPX_OBSTACLE_CELLS, 0.8, OPX_UNKNOWN_FREE};
     check_case(&strict);
     const sphere_case unknown = {OPX_ENGINE_DIRECT, 1, 0.0, OPX_OBSTACLE_CELLS, 0.0, OPX_UNKNOWN_OCCUPIED};
-    opx_linkset *arm = sphere_arm(&unknown);
-    opx_octree *tree = new_reach_map(5);
-    double *rows = random_arm_rows(ROWS, 17);
-    assert_true(check_rows(&unknown, arm, tree, rows) > 0);
-    free(rows);
-    opx_octree_destroy(tree);
-    opx_linkset_destroy(arm);
+    sphere_scene scene = open_scene(&unknown, 5, 17, ROWS);
+    assert_true(check_rows(&unknown, scene.arm, scene.tree, scene.rows) > 0);
+    close_scene(&scene);
 }
 
 /* The same query checks a map, then the map after another frame. */
 static void reads_a_changed_map_anew(void **state) {
     (void)state;
     const sphere_case c = {OPX_ENGINE_DIRECT, 1, 0.0, OPX_OBSTACLE_CELLS, 0.0, OPX_UNKNOWN_FREE};
-    opx_linkset *arm = sphere_arm(&c);
-    opx_octree *tree = new_reach_map(5);
-    double *rows = random_arm_rows(ROWS, 23);
-    const int before = check_rows(&c, arm, tree, rows);
+    sphere_scene scene = open_scene(&c, 5, 23, ROWS);
+    const int before = check_rows(&c, scene.arm, scene.tree, scene.rows);
     const double wall[6] = {-0.5, -0.6, 0.8, 0.6, 0.5, 0.9};
     const opx_insert_options endpoints = sensor_at(0.0, 0.0, 2.2, OPX_INSERT_ENDPOINTS);
-    insert_f64(tree, wall, 2, &endpoints);
-    const int after = check_rows(&c, arm, tree, rows);
-    assert_true(after >= before);
-    assert_ok(opx_octree_clear(tree));
-    assert_int_equal(check_rows(&c, arm, tree, rows), 0);
-    free(rows);
-    opx_octree_destroy(tree);
-    opx_linkset_destroy(arm);
+    insert_f64(scene.tree, wall, 2, &endpoints);
+    assert_true(check_rows(&c, scene.arm, scene.tree, scene.rows) >= before);
+    assert_ok(opx_octree_clear(scene.tree));
+    assert_int_equal(check_rows(&c, scene.arm, scene.tree, scene.rows), 0);
+    close_scene(&scene);
 }
 
 /* A box among the spheres: the same answers, from placed shapes. */
 static void arm_with_a_box_answers_the_same(void **state) {
     (void)state;
     const sphere_case c = {OPX_ENGINE_DIRECT, 2, 0.0, OPX_OBSTACLE_CELLS, 0.0, OPX_UNKNOWN_FREE};
-    opx_linkset *arm = sphere_arm(&c);
+    sphere_scene scene = open_scene(&c, 9, 29, ROWS);
     opx_shape box = OPX_SHAPE_INIT;
     box.kind = OPX_SHAPE_BOX;
     box.size[0] = box.size[1] = box.size[2] = 0.04;
-    assert_ok(opx_linkset_add_shape(arm, 2, &box, NULL));
-    opx_octree *tree = new_reach_map(9);
-    double *rows = random_arm_rows(ROWS, 29);
-    assert_true(check_rows(&c, arm, tree, rows) > 0);
-    free(rows);
-    opx_octree_destroy(tree);
-    opx_linkset_destroy(arm);
+    assert_ok(opx_linkset_add_shape(scene.arm, 2, &box, NULL));
+    assert_true(check_rows(&c, scene.arm, scene.tree, scene.rows) > 0);
+    close_scene(&scene);
 }
 
 /* A motion's first colliding sample is the first one single calls find. */
 static void motions_equal_single_calls(void **state) {
     (void)state;
     const sphere_case c = {OPX_ENGINE_DIRECT, 1, 0.0, OPX_OBSTACLE_CELLS, 0.0, OPX_UNKNOWN_FREE};
-    opx_linkset *arm = sphere_arm(&c);
-    opx_octree *tree = new_reach_map(5);
-    double *ends = random_arm_rows(2 * MOTIONS, 41);
+    sphere_scene scene = open_scene(&c, 5, 41, 2 * MOTIONS);
+    opx_linkset *arm = scene.arm;
+    const opx_octree *tree = scene.tree;
+    const double *ends = scene.rows;
     opx_query *query = new_query(), *single = new_query();
     opx_motion_request request = OPX_MOTION_REQUEST_INIT;
     request.resolution = 0.05;
@@ -214,9 +215,7 @@ static void motions_equal_single_calls(void **state) {
     assert_true(colliding > 0 && colliding < MOTIONS);
     opx_query_destroy(single);
     opx_query_destroy(query);
-    free(ends);
-    opx_octree_destroy(tree);
-    opx_linkset_destroy(arm);
+    close_scene(&scene);
 }
 
 int main(void) {

@@ -140,36 +140,45 @@ private:
     std::vector<double> boxes_;
 };
 
-// Spheres against a map of the attempt's own, read from the shared map's
-// image, so that every attempt's call builds the map's obstacle grid.
-// Failed, the call leaves the map as it was; the retry builds the grid.
-class SpheresAttempt : public Attempt {
+// An attempt on a map of its own, read from the shared map's image, so
+// that every attempt's call builds the map's obstacle grid.  Failed, the
+// call leaves the map as it was; the retry builds the grid.
+class OwnMapAttempt : public Attempt {
 public:
-    SpheresAttempt() : query_(new_query(OPX_ENGINE_DIRECT)) {
+    OwnMapAttempt() : query_(new_query(OPX_ENGINE_DIRECT)) {
         static const std::vector<unsigned char> image = map_image(shared_map(), OPX_FORMAT_OT);
         require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &tree_), "opx_octree_load_memory");
+    }
+    ~OwnMapAttempt() override {
+        opx_query_destroy(query_);
+        opx_octree_destroy(tree_);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+
+protected:
+    opx_query *query_;
+    opx_octree *tree_ = nullptr;
+};
+
+// Spheres against the attempt's own map.
+class SpheresAttempt : public OwnMapAttempt {
+public:
+    SpheresAttempt() {
         Lcg rng(11);
         for (size_t i = 0; i < kSpheres; ++i)
             for (double value : {rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.0, 2.5),
                                  rng.uniform(0.0, 0.3)})
                 rows_.push_back(value);
     }
-    ~SpheresAttempt() override {
-        opx_query_destroy(query_);
-        opx_octree_destroy(tree_);
-    }
     opx_status call() override {
         return opx_query_collide_spheres(query_, tree_, rows_.data(), kSpheres, 0, nullptr, collided_, kSpheres);
     }
-    void record_state(Record &record) override { record_map(record, tree_); }
     void record_answer(Record &record) override {
         for (size_t i = 0; i < kSpheres; ++i) record.add("sphere collided", uint32_t(collided_[i]));
     }
 
 private:
     static constexpr size_t kSpheres = 40;
-    opx_query *query_;
-    opx_octree *tree_ = nullptr;
     std::vector<double> rows_;
     uint8_t collided_[kSpheres] = {};
 };
@@ -190,23 +199,17 @@ const char kSphereArmUrdf[] =
     "<joint name=\"pitch\" type=\"continuous\"><parent link=\"upper\"/><child link=\"fore\"/>"
     "<origin xyz=\"0.5 0 0\"/><axis xyz=\"0 1 0\"/></joint></robot>";
 
-// A batch of the sphere arm on 2 threads against a map of the attempt's
-// own: the first configuration of each worker asks for the obstacle grid,
-// which one of them builds.  Failed, the call leaves the map as it was.
-class SphereBatchAttempt : public Attempt {
+// A batch of the sphere arm on 2 threads against the attempt's own map:
+// the first configuration of each worker asks for the obstacle grid,
+// which one of them builds.
+class SphereBatchAttempt : public OwnMapAttempt {
 public:
-    SphereBatchAttempt() : query_(new_query(OPX_ENGINE_DIRECT)) {
-        static const std::vector<unsigned char> image = map_image(shared_map(), OPX_FORMAT_OT);
-        require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &tree_), "opx_octree_load_memory");
+    SphereBatchAttempt() {
         require_ok(opx_linkset_load_urdf_string(kSphereArmUrdf, nullptr, &arm_), "opx_linkset_load_urdf_string");
         Lcg rng(13);
         for (size_t i = 0; i < 2 * kRows; ++i) rows_.push_back(rng.uniform(-3.0, 3.0));
     }
-    ~SphereBatchAttempt() override {
-        opx_query_destroy(query_);
-        opx_linkset_destroy(arm_);
-        opx_octree_destroy(tree_);
-    }
+    ~SphereBatchAttempt() override { opx_linkset_destroy(arm_); }
     opx_status call() override {
         opx_batch_request request = OPX_BATCH_REQUEST_INIT;
         request.max_threads = 2;
@@ -214,15 +217,12 @@ public:
         return opx_query_check_configurations(query_, tree_, arm_, rows_.data(), kRows, 2, 0, &base, 1, 0, &request,
                                               collided_, nullptr, kRows);
     }
-    void record_state(Record &record) override { record_map(record, tree_); }
     void record_answer(Record &record) override {
         for (size_t i = 0; i < kRows; ++i) record.add("configuration collided", uint32_t(collided_[i]));
     }
 
 private:
     static constexpr size_t kRows = 48;
-    opx_query *query_;
-    opx_octree *tree_ = nullptr;
     opx_linkset *arm_ = nullptr;
     std::vector<double> rows_;
     uint8_t collided_[kRows] = {};
