@@ -42,9 +42,7 @@ octoprox::InsertSettings from(const Vec3 &sensor) {
 // hit in every frame, clamp and prune into coarser leaves), inserted
 // `frames` times by ray casting from the origin.
 std::unique_ptr<SensorOctree> random_map(uint64_t seed, int frames) {
-    octoprox::OctreeParams params;
-    params.resolution = kRes;
-    auto tree = std::make_unique<SensorOctree>(params);
+    auto tree = unit::empty_octree(kRes);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<double> xyz;

@@ -31,9 +31,7 @@ constexpr double kRes = 0.02;
 // Occupied cells: `clusters` clumps of `per_cluster` points within 6 cm
 // of a centre in [-spread, spread]^3, inserted as endpoints.
 std::unique_ptr<SensorOctree> clustered_map(uint64_t seed, int clusters, int per_cluster, double spread) {
-    octoprox::OctreeParams params;
-    params.resolution = kRes;
-    auto tree = std::make_unique<SensorOctree>(params);
+    auto tree = unit::empty_octree(kRes);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<double> xyz;

@@ -35,12 +35,16 @@ std::vector<Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt
     return boxes;
 }
 
+std::unique_ptr<octoprox::SensorOctree> empty_octree(double resolution) {
+    octoprox::OctreeParams params;
+    params.resolution = resolution;
+    return std::make_unique<octoprox::SensorOctree>(params);
+}
+
 std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed) {
     constexpr size_t kCells = 7784;
     constexpr double kResolution = 0.2, kHalf = 20.0;
-    octoprox::OctreeParams params;
-    params.resolution = kResolution;
-    auto tree = std::make_unique<octoprox::SensorOctree>(params);
+    auto tree = empty_octree(kResolution);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> coordinate(-kHalf, kHalf);
     // One point per distinct cell (OctoMap's key: floor(coordinate / res)).

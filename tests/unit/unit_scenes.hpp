@@ -21,6 +21,9 @@ bool file_exists(const std::string &path);
 // (0, max_edge].
 std::vector<octoprox::Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt19937_64 &rng);
 
+// An empty octree of `resolution` metres, default parameters otherwise.
+std::unique_ptr<octoprox::SensorOctree> empty_octree(double resolution);
+
 // Paper section V: 7,784 distinct random cells of 0.2 m in [-20, 20]^3, each
 // hit once (occupied), in a sensor octree.
 std::unique_ptr<octoprox::SensorOctree> synthetic_octree(uint64_t seed);
