@@ -172,6 +172,12 @@ class BatchQueries:
           be None): collided when a link touches a cell or an object, the
           distance the least of both.
 
+        A robot made of spheres alone, asked for collisions with the map
+        only (no distance, self_collision or world; unknown space free), is
+        checked sphere by sphere on the map's obstacle grid, with the same
+        answers: about 10 ns a sphere; the first such call after the map
+        changed builds the grid.
+
         Returns a numpy bool array of N collided flags; with distance=True
         a tuple (collided, distances).  Raises InvalidArgumentError naming
         the row and joint of a bad value or a dof that is neither count,

@@ -109,7 +109,12 @@ impl Query {
     /// `request.self_collision` also checks the robot against itself,
     /// `request.compute_distance` gives each configuration's minimum
     /// distance.  No rows: no answers.  A non-finite joint value is an
-    /// invalid argument naming its row and joint.
+    /// invalid argument naming its row and joint.  A robot made of spheres
+    /// alone, asked for collisions with the map only (no distance,
+    /// self-collision or world; unknown space free), is checked sphere by
+    /// sphere on the map's obstacle grid, with the same answers: about
+    /// 10 ns a sphere; the first such call after the map changed builds
+    /// the grid.
     pub fn check_configurations(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64],
                                 bases: BasePoses<'_>, request: &BatchRequest)
         -> Result<ConfigurationAnswers> {
