@@ -33,6 +33,7 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_BOXES] = op_query_boxes,
     [OP_QUERY_READ] = op_query_read,
     [OP_QUERY_SPHERES] = op_query_spheres,
+    [OP_QUERY_BATCH] = op_query_batch,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }
@@ -67,6 +68,16 @@ void take_pose(fuzz_input *in, opx_pose *pose) {
         pose->position[i] = kind < 192 ? (double)(int8_t)take_u8(in) / 20.0 : take_double(in);
     for (int i = 0; i < 4; ++i)
         pose->orientation[i] = kind < 128 ? (double)(int8_t)take_u8(in) / 64.0 : take_double(in);
+}
+
+void find_occupied_targets(const opx_octree *tree, occupied_targets *targets) {
+    size_t total = 0;
+    targets->count = 0;
+    if (tree == NULL) return;
+    const opx_status status =
+        opx_octree_get_leaves(tree, OPX_MASK_OCCUPIED, targets->leaves, FUZZ_MAX_TARGETS, &total);
+    if (status == OPX_OK || status == OPX_ERROR_BUFFER_TOO_SMALL)
+        targets->count = total < FUZZ_MAX_TARGETS ? total : FUZZ_MAX_TARGETS;
 }
 
 size_t take_stride(fuzz_input *in, size_t element_size) {

@@ -49,6 +49,13 @@ opx_query *take_query(fuzz_api *api);
 uint32_t take_link(fuzz_api *api, const opx_linkset *links);
 /* A pose: mostly a valid one (small position, any non-zero quaternion). */
 void take_pose(fuzz_input *in, opx_pose *pose);
+/* Where spheres and robots go: near the map's first occupied leaves. */
+enum { FUZZ_MAX_TARGETS = 16 };
+typedef struct {
+    opx_leaf leaves[FUZZ_MAX_TARGETS];
+    size_t count;
+} occupied_targets;
+void find_occupied_targets(const opx_octree *tree, occupied_targets *targets);
 /* A stride for elements of `element_size` bytes: 0 (packed), the size, a
  * larger one, an unaligned one, or one too small. */
 size_t take_stride(fuzz_input *in, size_t element_size);
@@ -79,6 +86,8 @@ void op_linkset_read(fuzz_api *api);
 /* fuzz_api_robot.c */
 void op_robot_load(fuzz_api *api);
 void op_robot_joints(fuzz_api *api);
+/* A joint position: mostly small (+-3.2), sometimes any double. */
+double take_joint_position(fuzz_input *in);
 
 /* fuzz_api_query.c */
 void op_query_create(fuzz_api *api);
@@ -91,5 +100,8 @@ void op_query_spheres(fuzz_api *api);
 /* fuzz_api_path.c */
 void op_query_path(fuzz_api *api);
 void op_query_boxes(fuzz_api *api);
+
+/* fuzz_api_batch.c */
+void op_query_batch(fuzz_api *api);
 
 #endif /* OPX_FUZZ_API_H */

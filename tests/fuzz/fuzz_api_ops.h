@@ -34,6 +34,7 @@ enum fuzz_api_op {
     OP_QUERY_BOXES,
     OP_QUERY_READ,
     OP_QUERY_SPHERES,
+    OP_QUERY_BATCH,
     OP_COUNT
 };
 

@@ -55,6 +55,17 @@ void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
         geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
 }
 
+void take_batch_request(fuzz_input *in, opx_batch_request *request) {
+    request->struct_size = take_struct_size(in, sizeof *request);
+    request->unknown_policy = take_policy(in);
+    request->occupancy_threshold = take_threshold(in);
+    const uint8_t threads = take_u8(in);
+    request->max_threads = threads < 240 ? 1 + threads % 3 : take_u32(in);
+    const uint8_t geometry = take_u8(in);
+    request->obstacle_geometry =
+        geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
+}
+
 void take_distance_request(fuzz_input *in, opx_distance_request *request) {
     request->struct_size = take_struct_size(in, sizeof *request);
     request->unknown_policy = take_policy(in);

@@ -11,6 +11,8 @@ void take_collision_request(fuzz_input *in, opx_collision_request *request);
 void take_distance_request(fuzz_input *in, opx_distance_request *request);
 void take_path_request(fuzz_input *in, opx_path_request *request);
 void take_sphere_request(fuzz_input *in, opx_sphere_request *request);
+/* Collisions only (no distance, no self-collision), on 1 to 3 threads. */
+void take_batch_request(fuzz_input *in, opx_batch_request *request);
 
 /* request NULL: the defaults. */
 void check_collision_result(const opx_collision_request *request, const opx_collision_result *result);

@@ -26,6 +26,31 @@ static const char ROBOT_URDF[] =
     "<link name=\"tool\"><collision><geometry><sphere radius=\"0.03\"/></geometry></collision></link>"
     "</robot>";
 
+/* The same joints with spheres alone: a robot the batch checks on the
+ * map's obstacle grid. */
+static const char SPHERE_ROBOT_URDF[] =
+    "<robot name=\"fuzz_spheres\">"
+    "<link name=\"base\"><collision><geometry><sphere radius=\"0.2\"/></geometry></collision></link>"
+    "<link name=\"arm\"><collision><origin xyz=\"0.1 0 0\"/><geometry><sphere radius=\"0.05\"/></geometry>"
+    "</collision><collision><origin xyz=\"0.3 0 0\"/><geometry><sphere radius=\"0.06\"/></geometry>"
+    "</collision><collision><origin xyz=\"0.5 0 0\"/><geometry><sphere radius=\"0.04\"/></geometry>"
+    "</collision></link>"
+    "<link name=\"slider\"><collision><geometry><sphere radius=\"0.07\"/></geometry></collision></link>"
+    "<link name=\"wheel\"/><link name=\"finger\"/><link name=\"float\"/><link name=\"plane\"/>"
+    "<joint name=\"shoulder\" type=\"revolute\"><parent link=\"base\"/><child link=\"arm\"/>"
+    "<origin xyz=\"0 0 0.2\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"2\" effort=\"1\" velocity=\"1\"/></joint>"
+    "<joint name=\"slide\" type=\"prismatic\"><parent link=\"arm\"/><child link=\"slider\"/>"
+    "<axis xyz=\"1 0 0\"/><limit lower=\"0\" upper=\"0.3\" effort=\"1\" velocity=\"1\"/></joint>"
+    "<joint name=\"wheel\" type=\"continuous\"><parent link=\"base\"/><child link=\"wheel\"/></joint>"
+    "<joint name=\"finger\" type=\"prismatic\"><parent link=\"slider\"/><child link=\"finger\"/>"
+    "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
+    "<mimic joint=\"slide\" multiplier=\"2\" offset=\"0.01\"/></joint>"
+    "<joint name=\"float\" type=\"floating\"><parent link=\"base\"/><child link=\"float\"/></joint>"
+    "<joint name=\"plane\" type=\"planar\"><parent link=\"base\"/><child link=\"plane\"/></joint>"
+    "<joint name=\"tool\" type=\"fixed\"><parent link=\"finger\"/><child link=\"tool\"/></joint>"
+    "<link name=\"tool\"><collision><geometry><sphere radius=\"0.03\"/></geometry></collision></link>"
+    "</robot>";
+
 static const char *const JOINT_NAMES[] = {"shoulder", "slide", "wheel", "finger", "float", "plane", "tool", "none", ""};
 #define JOINT_NAME_COUNT (sizeof JOINT_NAMES / sizeof JOINT_NAMES[0])
 
@@ -33,9 +58,10 @@ void op_robot_load(fuzz_api *api) {
     opx_urdf_options options = OPX_URDF_OPTIONS_INIT;
     options.struct_size = take_struct_size(&api->in, sizeof options);
     opx_linkset *robot = NULL;
+    const uint8_t which = take_u8(&api->in);
+    const char *urdf = which < 200 ? ROBOT_URDF : which < 240 ? SPHERE_ROBOT_URDF : NULL;
     const opx_status status =
-        FUZZ_CALL(opx_linkset_load_urdf_string, take_u8(&api->in) < 240 ? ROBOT_URDF : NULL,
-                  take_bool(&api->in) ? &options : NULL, &robot);
+        FUZZ_CALL(opx_linkset_load_urdf_string, urdf, take_bool(&api->in) ? &options : NULL, &robot);
     FUZZ_REQUIRE((status == OPX_OK) == (robot != NULL));
     if (robot == NULL) return;
     const size_t slot = take_slot(api);
@@ -43,7 +69,7 @@ void op_robot_load(fuzz_api *api) {
     api->linksets[slot] = robot;
 }
 
-static double take_position(fuzz_input *in) {
+double take_joint_position(fuzz_input *in) {
     return take_u8(in) < 224 ? (double)(int8_t)take_u8(in) / 40.0 : take_double(in);
 }
 
@@ -52,7 +78,7 @@ static void set_positions(fuzz_api *api, opx_linkset *links, uint32_t joint_coun
     const uint8_t kind = take_u8(in);
     const size_t count = kind < 224 ? joint_count : take_below(in, (size_t)joint_count + 2);
     double positions[16] = {0};
-    for (size_t i = 0; i < count && i < 16; ++i) positions[i] = take_position(in);
+    for (size_t i = 0; i < count && i < 16; ++i) positions[i] = take_joint_position(in);
     opx_pose base;
     take_pose(in, &base);
     const uint8_t nulls = take_u8(in);
@@ -68,7 +94,7 @@ static void set_named_positions(fuzz_api *api, opx_linkset *links) {
     double positions[4];
     for (size_t i = 0; i < count; ++i) {
         names[i] = take_u8(in) < 248 ? JOINT_NAMES[take_below(in, JOINT_NAME_COUNT)] : NULL;
-        positions[i] = take_position(in);
+        positions[i] = take_joint_position(in);
     }
     FUZZ_CALL(opx_linkset_set_named_joint_positions, links, take_u8(in) < 248 ? names : NULL, positions, count,
               NULL);

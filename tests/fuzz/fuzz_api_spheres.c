@@ -8,8 +8,6 @@
 
 enum { MAX_SPHERES = 8 };
 
-enum { MAX_LEAVES = 16 };
-
 /* Mostly 2 to 66 cm (a record's end reads zeros: 2 cm); a link set
  * refuses a radius of 0, which the call under test takes. */
 static double take_radius(fuzz_input *in) {
@@ -17,23 +15,9 @@ static double take_radius(fuzz_input *in) {
     return kind < 200 ? 0.02 + take_u8(in) / 400.0 : take_double(in);
 }
 
-/* Where spheres go: near the map's first occupied leaves. */
-typedef struct {
-    opx_leaf leaves[MAX_LEAVES];
-    size_t count;
-} sphere_targets;
-
-static void find_targets(const opx_octree *tree, sphere_targets *targets) {
-    size_t total = 0;
-    targets->count = 0;
-    if (tree == NULL) return;
-    const opx_status status = opx_octree_get_leaves(tree, OPX_MASK_OCCUPIED, targets->leaves, MAX_LEAVES, &total);
-    if (status == OPX_OK || status == OPX_ERROR_BUFFER_TOO_SMALL) targets->count = total < MAX_LEAVES ? total : MAX_LEAVES;
-}
-
 /* A row: mostly near an occupied leaf (a record's end reads zeros: at
  * its centre) or touching one of its faces exactly, else anywhere. */
-static void take_row(fuzz_input *in, const sphere_targets *targets, double row[4]) {
+static void take_row(fuzz_input *in, const occupied_targets *targets, double row[4]) {
     row[3] = take_radius(in);
     const uint8_t kind = take_u8(in);
     if (targets->count == 0 || kind >= 224) {
@@ -87,8 +71,8 @@ void op_query_spheres(fuzz_api *api) {
     const size_t count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
     const size_t stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
     const size_t step = stride == 0 ? 4 * sizeof(double) : stride;
-    sphere_targets targets;
-    find_targets(tree, &targets);
+    occupied_targets targets;
+    find_occupied_targets(tree, &targets);
     double *rows = calloc(array_bytes(count, stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
     FUZZ_REQUIRE(rows != NULL);
     for (size_t i = 0; i < count && step >= 4 * sizeof(double); ++i) {

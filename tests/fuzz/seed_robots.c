@@ -138,6 +138,27 @@ static void emit_scene(program *p, unsigned char engine) {
     EMIT(p, OP_QUERY_CREATE, 0, engine, 1, 9, 0, 0);
 }
 
+/* A batch of four rows of the URDF robot in slot 0 (7 joints) against
+ * tree 0 on query 0, on two threads, its root near an occupied leaf: the
+ * arguments op_query_batch reads, in its order. */
+static void emit_batch(program *p) {
+    unsigned char args[255];
+    size_t n = 0;
+    const unsigned char head[] = {0, 0, 0, /* query, tree, link set: slot 0 */
+                                  0, 0, 0, 1, 0, /* request: size, free, the map's threshold, 2 threads, cells */
+                                  0, 0, 3}; /* the robot's joint count; 4 rows */
+    for (size_t i = 0; i < sizeof head; ++i) args[n++] = head[i];
+    for (int i = 0; i < 4 * 7; ++i) args[n++] = 0, args[n++] = next_random(p); /* small joint positions */
+    const unsigned char base[] = {0, 0, 0, 0, 0, 0, 0, 64, /* pose: origin, identity */
+                                  0, next_random(p), next_random(p), next_random(p), next_random(p)}; /* near a leaf */
+    for (size_t i = 0; i < sizeof base; ++i) args[n++] = base[i];
+    emit(p, OP_QUERY_BATCH, args, n);
+}
+
+/* Tail steps besides operations: load the robot of spheres alone
+ * (op_robot_load), a batch of the robot in slot 0 (emit_batch). */
+enum { LOAD_SPHERE_ROBOT = -1, BATCH_OF_ROBOT = -2 };
+
 void write_api_seeds(const char *out_dir) {
     static const int tail_ops[][6] = {
         {OP_QUERY_COLLIDE, OP_QUERY_DISTANCE, OP_QUERY_READ, OP_QUERY_PATH, OP_OCTREE_IMAGE, OP_QUERY_BOXES},
@@ -148,6 +169,8 @@ void write_api_seeds(const char *out_dir) {
          OP_QUERY_DISTANCE},
         {OP_QUERY_SPHERES, OP_OCTREE_EXERCISE, OP_QUERY_SPHERES, OP_OCTREE_CLEAR, OP_QUERY_SPHERES,
          OP_QUERY_COLLIDE},
+        {LOAD_SPHERE_ROBOT, BATCH_OF_ROBOT, OP_QUERY_BATCH, BATCH_OF_ROBOT, OP_OCTREE_EXERCISE, BATCH_OF_ROBOT},
+        {OP_ROBOT_LOAD, BATCH_OF_ROBOT, OP_OCTREE_CLEAR, BATCH_OF_ROBOT, OP_ROBOT_JOINTS, OP_QUERY_BATCH},
     };
     const size_t tails = sizeof tail_ops / sizeof tail_ops[0];
     for (size_t s = 0; s < 2 * tails; ++s) {
@@ -157,6 +180,8 @@ void write_api_seeds(const char *out_dir) {
         const int *ops = tail_ops[s % tails];
         for (int i = 0; i < 6; ++i) {
             if (ops[i] == OP_ROBOT_LOAD) EMIT(&p, OP_ROBOT_LOAD, 0, 0, 0, 0);
+            else if (ops[i] == LOAD_SPHERE_ROBOT) EMIT(&p, OP_ROBOT_LOAD, 0, 210, 0, 0);
+            else if (ops[i] == BATCH_OF_ROBOT) emit_batch(&p);
             else emit_random(&p, ops[i], 24 + next_random(&p) % 64);
         }
         char name[32];

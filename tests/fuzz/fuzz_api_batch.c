@@ -1,0 +1,70 @@
+/* The batch operation of the call-sequence fuzzer: joint vectors of a link
+ * set (mostly a robot from op_robot_load, the one of spheres alone among
+ * them, which the batch checks on the map's obstacle grid) against a map,
+ * on 1 to 3 threads.  Each accepted answer must equal the single call's:
+ * forward kinematics on a clone of the link set, then opx_query_collide
+ * with the same settings.  See fuzz_api.h. */
+#include "fuzz_api.h"
+#include "fuzz_api_requests.h"
+
+enum { MAX_ROWS = 4, MAX_JOINTS = 16 };
+
+/* The robot's root: mostly within half a metre of one of the map's first
+ * occupied leaves, in any orientation; else any pose. */
+static void take_base(fuzz_input *in, const opx_octree *tree, opx_pose *base) {
+    take_pose(in, base);
+    occupied_targets targets;
+    find_occupied_targets(tree, &targets);
+    if (targets.count == 0 || take_u8(in) >= 224) return;
+    const opx_leaf *leaf = &targets.leaves[take_below(in, targets.count)];
+    for (int axis = 0; axis < 3; ++axis)
+        base->position[axis] = leaf->center[axis] + (double)(int8_t)take_u8(in) / 256.0;
+}
+
+/* The single call's answer for one row; -1 when a call refuses. */
+static int single_collides(opx_query *query, const opx_octree *tree, const opx_linkset *links, const double *row,
+                           size_t joints, const opx_pose *base, const opx_batch_request *request) {
+    opx_linkset *clone = NULL;
+    opx_collision_request collision = OPX_COLLISION_REQUEST_INIT;
+    collision.max_contacts = 0;
+    collision.unknown_policy = request->unknown_policy;
+    collision.occupancy_threshold = request->occupancy_threshold;
+    collision.obstacle_geometry = request->obstacle_geometry;
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    int collided = -1;
+    if (opx_linkset_clone(links, &clone) == OPX_OK &&
+        opx_linkset_set_joint_positions(clone, row, joints, base) == OPX_OK &&
+        opx_query_collide(query, tree, clone, &collision, &result) == OPX_OK)
+        collided = result.collided;
+    opx_linkset_destroy(clone);
+    return collided;
+}
+
+void op_query_batch(fuzz_api *api) {
+    fuzz_input *in = &api->in;
+    opx_query *query = take_query(api);
+    const opx_octree *tree = take_tree(api);
+    const opx_linkset *links = take_linkset(api);
+    opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+    take_batch_request(in, &request);
+    uint32_t joint_count = 0;
+    if (links != NULL && opx_linkset_get_joint_count(links, &joint_count) != OPX_OK) joint_count = 0;
+    /* Mostly the robot's joint count and a few rows, sometimes neither. */
+    const size_t joints = take_u8(in) < 240 ? joint_count : take_below(in, MAX_JOINTS + 1);
+    const size_t count = take_u8(in) < 240 ? 1 + take_below(in, MAX_ROWS) : take_below(in, MAX_ROWS + 1);
+    double rows[MAX_ROWS * MAX_JOINTS] = {0};
+    if (joints > MAX_JOINTS) return;
+    for (size_t i = 0; i < count * joints; ++i) rows[i] = take_joint_position(in);
+    opx_pose base;
+    take_base(in, tree, &base);
+    uint8_t collided[MAX_ROWS];
+    const opx_status status = FUZZ_CALL(opx_query_check_configurations, query, tree, links, rows, count, joints, 0,
+                                        &base, 1, 0, &request, collided, NULL, count);
+    /* An older request's size leaves the later fields at their defaults. */
+    if (status != OPX_OK || tree == NULL || request.struct_size != sizeof request) return;
+    for (size_t i = 0; i < count; ++i) {
+        const int expected =
+            single_collides(api->reference[0], tree, links, rows + i * joints, joints, &base, &request);
+        if (expected >= 0) FUZZ_REQUIRE(collided[i] == expected);
+    }
+}
