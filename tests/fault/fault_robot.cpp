@@ -37,6 +37,20 @@ const char kArmUrdf[] =
 
 namespace {
 
+const char kSphereArmUrdf[] =
+    "<?xml version=\"1.0\"?><robot name=\"sphere_arm\">"
+    "<link name=\"base\"><collision><origin xyz=\"0 0 0.1\"/><geometry><sphere radius=\"0.12\"/></geometry>"
+    "</collision></link>"
+    "<link name=\"upper\"><collision><origin xyz=\"0.2 0 0\"/><geometry><sphere radius=\"0.08\"/></geometry>"
+    "</collision><collision><origin xyz=\"0.45 0 0\"/><geometry><sphere radius=\"0.06\"/></geometry>"
+    "</collision></link>"
+    "<link name=\"fore\"><collision><origin xyz=\"0.25 0 0\"/><geometry><sphere radius=\"0.07\"/></geometry>"
+    "</collision></link>"
+    "<joint name=\"yaw\" type=\"continuous\"><parent link=\"base\"/><child link=\"upper\"/>"
+    "<origin xyz=\"0 0 0.3\"/><axis xyz=\"0 0 1\"/></joint>"
+    "<joint name=\"pitch\" type=\"continuous\"><parent link=\"upper\"/><child link=\"fore\"/>"
+    "<origin xyz=\"0.5 0 0\"/><axis xyz=\"0 1 0\"/></joint></robot>";
+
 constexpr uint32_t kToolLink = 5;
 constexpr uint32_t kGripperLink = 6;
 
@@ -127,6 +141,19 @@ std::vector<opx_pose> arm_path(const opx_linkset *arm, size_t first, size_t coun
         path.insert(path.end(), poses.begin(), poses.end());
     }
     return path;
+}
+
+opx_linkset *sphere_arm() {
+    opx_linkset *arm = nullptr;
+    require_ok(opx_linkset_load_urdf_string(kSphereArmUrdf, nullptr, &arm), "opx_linkset_load_urdf_string");
+    return arm;
+}
+
+std::vector<double> sphere_arm_rows(size_t count, uint64_t seed) {
+    Lcg rng(seed);
+    std::vector<double> rows;
+    for (size_t i = 0; i < kSphereArmJoints * count; ++i) rows.push_back(rng.uniform(-3.0, 3.0));
+    return rows;
 }
 
 }  // namespace fault

@@ -69,6 +69,15 @@ std::vector<opx_pose> arm_link_poses(const opx_linkset *arm, size_t i);
 // `count` waypoints from configuration first on: waypoint-major poses.
 std::vector<opx_pose> arm_path(const opx_linkset *arm, size_t first, size_t count);
 
+// An arm of spheres alone (three links, two joints), whose batch reads
+// the map's obstacle grid, and its base pose: in the room, reaching the
+// box on the floor.
+opx_linkset *sphere_arm();
+constexpr size_t kSphereArmJoints = 2;
+constexpr opx_pose kSphereArmBase = {{0.5, 0.1, 0.2}, {0.0, 0.0, 0.0, 1.0}};
+// `count` rows of its joints, seeded.
+std::vector<double> sphere_arm_rows(size_t count, uint64_t seed);
+
 // `count` caller boxes (min xyz, max xyz) scattered over the room.
 std::vector<double> room_boxes(size_t count, uint64_t seed);
 

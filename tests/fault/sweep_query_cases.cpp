@@ -183,39 +183,21 @@ private:
     uint8_t collided_[kSpheres] = {};
 };
 
-// An arm of spheres alone (three links, two joints), whose batch reads
-// the map's obstacle grid.
-const char kSphereArmUrdf[] =
-    "<?xml version=\"1.0\"?><robot name=\"sphere_arm\">"
-    "<link name=\"base\"><collision><origin xyz=\"0 0 0.1\"/><geometry><sphere radius=\"0.12\"/></geometry>"
-    "</collision></link>"
-    "<link name=\"upper\"><collision><origin xyz=\"0.2 0 0\"/><geometry><sphere radius=\"0.08\"/></geometry>"
-    "</collision><collision><origin xyz=\"0.45 0 0\"/><geometry><sphere radius=\"0.06\"/></geometry>"
-    "</collision></link>"
-    "<link name=\"fore\"><collision><origin xyz=\"0.25 0 0\"/><geometry><sphere radius=\"0.07\"/></geometry>"
-    "</collision></link>"
-    "<joint name=\"yaw\" type=\"continuous\"><parent link=\"base\"/><child link=\"upper\"/>"
-    "<origin xyz=\"0 0 0.3\"/><axis xyz=\"0 0 1\"/></joint>"
-    "<joint name=\"pitch\" type=\"continuous\"><parent link=\"upper\"/><child link=\"fore\"/>"
-    "<origin xyz=\"0.5 0 0\"/><axis xyz=\"0 1 0\"/></joint></robot>";
-
 // A batch of the sphere arm on 2 threads against the attempt's own map:
 // the first configuration of each worker asks for the obstacle grid,
 // which one of them builds.
 class SphereBatchAttempt : public OwnMapAttempt {
 public:
     SphereBatchAttempt() {
-        require_ok(opx_linkset_load_urdf_string(kSphereArmUrdf, nullptr, &arm_), "opx_linkset_load_urdf_string");
-        Lcg rng(13);
-        for (size_t i = 0; i < 2 * kRows; ++i) rows_.push_back(rng.uniform(-3.0, 3.0));
+        arm_ = sphere_arm();
+        rows_ = sphere_arm_rows(kRows, 13);
     }
     ~SphereBatchAttempt() override { opx_linkset_destroy(arm_); }
     opx_status call() override {
         opx_batch_request request = OPX_BATCH_REQUEST_INIT;
         request.max_threads = 2;
-        const opx_pose base = {{-1.0, 0.5, 0.2}, {0.0, 0.0, 0.0, 1.0}};
-        return opx_query_check_configurations(query_, tree_, arm_, rows_.data(), kRows, 2, 0, &base, 1, 0, &request,
-                                              collided_, nullptr, kRows);
+        return opx_query_check_configurations(query_, tree_, arm_, rows_.data(), kRows, kSphereArmJoints, 0,
+                                              &kSphereArmBase, 1, 0, &request, collided_, nullptr, kRows);
     }
     void record_answer(Record &record) override {
         for (size_t i = 0; i < kRows; ++i) record.add("configuration collided", uint32_t(collided_[i]));

@@ -2,11 +2,12 @@
 // N threads (2, 4, 8), each with its own query contexts, each running every
 // query kind that takes const handles on both engines over many poses, and
 // every read of the map and the link sets.  Every thread must answer bit
-// for bit what one thread alone answers.  The link sets, and a copy of the
-// map for sphere queries, are made anew for each run and never queried
-// before it, so their lazy work (the tree over shapes added by hand, a mesh
-// placed when first reached, the map's obstacle grid) happens while the
-// threads race for it.  Built with -fsanitize=thread it is tsan_threads.
+// for bit what one thread alone answers.  The link sets, and two copies of
+// the map (for sphere queries, and for batches of an arm of spheres on two
+// workers each), are made anew for each run and never queried before it,
+// so their lazy work (the tree over shapes added by hand, a mesh placed
+// when first reached, the maps' obstacle grids) happens while the threads
+// race for it.  Built with -fsanitize=thread it is tsan_threads.
 //
 // Usage: fault_threads [--poses N] [--without-unplaced-links] [thread counts...]
 //   --poses N: N posed arms (default 48)
@@ -47,11 +48,16 @@ struct SharedScene {
     std::vector<double> boxes;
     opx_octree *sphere_map = nullptr;  // a copy of tree whose grid the first sphere query builds
     std::vector<double> spheres;       // x y z radius rows
+    opx_octree *batch_map = nullptr;   // another copy, whose grid the first sphere-arm batch builds
+    opx_linkset *sphere_arm = nullptr;
+    std::vector<double> sphere_rows;   // its joint rows
 
     ~SharedScene() {
         for (opx_linkset *arm : arms) opx_linkset_destroy(arm);
         opx_linkset_destroy(loose);
         opx_octree_destroy(sphere_map);
+        opx_octree_destroy(batch_map);
+        opx_linkset_destroy(sphere_arm);
     }
 };
 
@@ -90,8 +96,10 @@ std::unique_ptr<SharedScene> make_scene(const opx_octree *tree, const Settings &
     for (size_t i = 0; i < settings.poses; ++i) scene->paths.push_back(arm_path(scene->arms[0], 3 * i, kWaypoints));
     scene->boxes = room_boxes(300, 21);
     const std::vector<unsigned char> image = map_image(tree, OPX_FORMAT_OT);
-    require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, &scene->sphere_map),
-               "opx_octree_load_memory");
+    for (opx_octree **copy : {&scene->sphere_map, &scene->batch_map})
+        require_ok(opx_octree_load_memory(image.data(), image.size(), nullptr, copy), "opx_octree_load_memory");
+    scene->sphere_arm = sphere_arm();
+    scene->sphere_rows = sphere_arm_rows(64, 7);
     Lcg rng(5);
     for (size_t i = 0; i < 64; ++i)
         for (double value : {rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.0, 2.5), rng.uniform(0.0, 0.3)})
@@ -175,9 +183,28 @@ void sphere_queries(Record &record, const SharedScene &scene) {
     opx_query_destroy(query);
 }
 
+// The arm of spheres' rows in one batch on two workers, then on one, on
+// the second map copy.
+void sphere_batch_queries(Record &record, const SharedScene &scene) {
+    opx_query *query = new_query(OPX_ENGINE_DIRECT);
+    const size_t count = scene.sphere_rows.size() / kSphereArmJoints;
+    std::vector<uint8_t> collided(count);
+    for (uint32_t workers : {2u, 1u}) {
+        opx_batch_request request = OPX_BATCH_REQUEST_INIT;
+        request.max_threads = workers;
+        record.add("check_configurations",
+                   opx_query_check_configurations(query, scene.batch_map, scene.sphere_arm, scene.sphere_rows.data(),
+                                                  count, kSphereArmJoints, 0, &kSphereArmBase, 1, 0, &request,
+                                                  collided.data(), nullptr, count));
+        record.add_bytes("configurations collided", collided.data(), count);
+    }
+    opx_query_destroy(query);
+}
+
 Record every_answer(const SharedScene &scene) {
     Record record;
     sphere_queries(record, scene);
+    sphere_batch_queries(record, scene);
     octree_queries(record, scene, OPX_ENGINE_DIRECT);
     octree_queries(record, scene, OPX_ENGINE_AMORTIZED);
     box_queries(record, scene);
