@@ -25,11 +25,8 @@ static void take_base(fuzz_input *in, const opx_octree *tree, opx_pose *base) {
 static int single_collides(opx_query *query, const opx_octree *tree, const opx_linkset *links, const double *row,
                            size_t joints, const opx_pose *base, const opx_batch_request *request) {
     opx_linkset *clone = NULL;
-    opx_collision_request collision = OPX_COLLISION_REQUEST_INIT;
-    collision.max_contacts = 0;
-    collision.unknown_policy = request->unknown_policy;
-    collision.occupancy_threshold = request->occupancy_threshold;
-    collision.obstacle_geometry = request->obstacle_geometry;
+    const opx_collision_request collision =
+        yes_no_request(request->unknown_policy, request->occupancy_threshold, request->obstacle_geometry);
     opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     int collided = -1;
     if (opx_linkset_clone(links, &clone) == OPX_OK &&

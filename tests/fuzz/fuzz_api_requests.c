@@ -55,6 +55,15 @@ void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
         geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
 }
 
+opx_collision_request yes_no_request(int32_t unknown_policy, double occupancy_threshold, int32_t obstacle_geometry) {
+    opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
+    request.max_contacts = 0;
+    request.unknown_policy = unknown_policy;
+    request.occupancy_threshold = occupancy_threshold;
+    request.obstacle_geometry = obstacle_geometry;
+    return request;
+}
+
 void take_batch_request(fuzz_input *in, opx_batch_request *request) {
     request->struct_size = take_struct_size(in, sizeof *request);
     request->unknown_policy = take_policy(in);

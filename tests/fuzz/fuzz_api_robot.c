@@ -4,30 +4,32 @@
 
 #include <stdlib.h>
 
-/* Every joint type, a mimic joint, every primitive shape. */
+/* Every joint type and a mimic joint, shared by both robots below. */
+#define ROBOT_JOINTS \
+    "<link name=\"wheel\"/><link name=\"finger\"/><link name=\"float\"/><link name=\"plane\"/>" \
+    "<joint name=\"shoulder\" type=\"revolute\"><parent link=\"base\"/><child link=\"arm\"/>" \
+    "<origin xyz=\"0 0 0.2\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"2\" effort=\"1\" velocity=\"1\"/></joint>" \
+    "<joint name=\"slide\" type=\"prismatic\"><parent link=\"arm\"/><child link=\"slider\"/>" \
+    "<axis xyz=\"1 0 0\"/><limit lower=\"0\" upper=\"0.3\" effort=\"1\" velocity=\"1\"/></joint>" \
+    "<joint name=\"wheel\" type=\"continuous\"><parent link=\"base\"/><child link=\"wheel\"/></joint>" \
+    "<joint name=\"finger\" type=\"prismatic\"><parent link=\"slider\"/><child link=\"finger\"/>" \
+    "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/>" \
+    "<mimic joint=\"slide\" multiplier=\"2\" offset=\"0.01\"/></joint>" \
+    "<joint name=\"float\" type=\"floating\"><parent link=\"base\"/><child link=\"float\"/></joint>" \
+    "<joint name=\"plane\" type=\"planar\"><parent link=\"base\"/><child link=\"plane\"/></joint>" \
+    "<joint name=\"tool\" type=\"fixed\"><parent link=\"finger\"/><child link=\"tool\"/></joint>" \
+    "<link name=\"tool\"><collision><geometry><sphere radius=\"0.03\"/></geometry></collision></link>"
+
+/* Every primitive shape. */
 static const char ROBOT_URDF[] =
     "<robot name=\"fuzz\">"
     "<link name=\"base\"><collision><geometry><box size=\"0.4 0.3 0.2\"/></geometry></collision></link>"
     "<link name=\"arm\"><collision><origin xyz=\"0.25 0 0\" rpy=\"0 1.57 0\"/>"
     "<geometry><cylinder radius=\"0.05\" length=\"0.5\"/></geometry></collision></link>"
     "<link name=\"slider\"><collision><geometry><sphere radius=\"0.07\"/></geometry></collision></link>"
-    "<link name=\"wheel\"/><link name=\"finger\"/><link name=\"float\"/><link name=\"plane\"/>"
-    "<joint name=\"shoulder\" type=\"revolute\"><parent link=\"base\"/><child link=\"arm\"/>"
-    "<origin xyz=\"0 0 0.2\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"2\" effort=\"1\" velocity=\"1\"/></joint>"
-    "<joint name=\"slide\" type=\"prismatic\"><parent link=\"arm\"/><child link=\"slider\"/>"
-    "<axis xyz=\"1 0 0\"/><limit lower=\"0\" upper=\"0.3\" effort=\"1\" velocity=\"1\"/></joint>"
-    "<joint name=\"wheel\" type=\"continuous\"><parent link=\"base\"/><child link=\"wheel\"/></joint>"
-    "<joint name=\"finger\" type=\"prismatic\"><parent link=\"slider\"/><child link=\"finger\"/>"
-    "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
-    "<mimic joint=\"slide\" multiplier=\"2\" offset=\"0.01\"/></joint>"
-    "<joint name=\"float\" type=\"floating\"><parent link=\"base\"/><child link=\"float\"/></joint>"
-    "<joint name=\"plane\" type=\"planar\"><parent link=\"base\"/><child link=\"plane\"/></joint>"
-    "<joint name=\"tool\" type=\"fixed\"><parent link=\"finger\"/><child link=\"tool\"/></joint>"
-    "<link name=\"tool\"><collision><geometry><sphere radius=\"0.03\"/></geometry></collision></link>"
-    "</robot>";
+    ROBOT_JOINTS "</robot>";
 
-/* The same joints with spheres alone: a robot the batch checks on the
- * map's obstacle grid. */
+/* Spheres alone: a robot the batch checks on the map's obstacle grid. */
 static const char SPHERE_ROBOT_URDF[] =
     "<robot name=\"fuzz_spheres\">"
     "<link name=\"base\"><collision><geometry><sphere radius=\"0.2\"/></geometry></collision></link>"
@@ -36,20 +38,7 @@ static const char SPHERE_ROBOT_URDF[] =
     "</collision><collision><origin xyz=\"0.5 0 0\"/><geometry><sphere radius=\"0.04\"/></geometry>"
     "</collision></link>"
     "<link name=\"slider\"><collision><geometry><sphere radius=\"0.07\"/></geometry></collision></link>"
-    "<link name=\"wheel\"/><link name=\"finger\"/><link name=\"float\"/><link name=\"plane\"/>"
-    "<joint name=\"shoulder\" type=\"revolute\"><parent link=\"base\"/><child link=\"arm\"/>"
-    "<origin xyz=\"0 0 0.2\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"2\" effort=\"1\" velocity=\"1\"/></joint>"
-    "<joint name=\"slide\" type=\"prismatic\"><parent link=\"arm\"/><child link=\"slider\"/>"
-    "<axis xyz=\"1 0 0\"/><limit lower=\"0\" upper=\"0.3\" effort=\"1\" velocity=\"1\"/></joint>"
-    "<joint name=\"wheel\" type=\"continuous\"><parent link=\"base\"/><child link=\"wheel\"/></joint>"
-    "<joint name=\"finger\" type=\"prismatic\"><parent link=\"slider\"/><child link=\"finger\"/>"
-    "<axis xyz=\"0 1 0\"/><limit lower=\"0\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
-    "<mimic joint=\"slide\" multiplier=\"2\" offset=\"0.01\"/></joint>"
-    "<joint name=\"float\" type=\"floating\"><parent link=\"base\"/><child link=\"float\"/></joint>"
-    "<joint name=\"plane\" type=\"planar\"><parent link=\"base\"/><child link=\"plane\"/></joint>"
-    "<joint name=\"tool\" type=\"fixed\"><parent link=\"finger\"/><child link=\"tool\"/></joint>"
-    "<link name=\"tool\"><collision><geometry><sphere radius=\"0.03\"/></geometry></collision></link>"
-    "</robot>";
+    ROBOT_JOINTS "</robot>";
 
 static const char *const JOINT_NAMES[] = {"shoulder", "slide", "wheel", "finger", "float", "plane", "tool", "none", ""};
 #define JOINT_NAME_COUNT (sizeof JOINT_NAMES / sizeof JOINT_NAMES[0])

@@ -43,11 +43,8 @@ static int one_sphere_collides(opx_query *query, const opx_octree *tree, const d
     shape.radius = row[3];
     opx_pose pose = OPX_POSE_IDENTITY;
     for (int axis = 0; axis < 3; ++axis) pose.position[axis] = row[axis];
-    opx_collision_request collision = OPX_COLLISION_REQUEST_INIT;
-    collision.max_contacts = 0;
-    collision.unknown_policy = request->unknown_policy;
-    collision.occupancy_threshold = request->occupancy_threshold;
-    collision.obstacle_geometry = request->obstacle_geometry;
+    const opx_collision_request collision =
+        yes_no_request(request->unknown_policy, request->occupancy_threshold, request->obstacle_geometry);
     opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     int collided = -1;
     if (opx_linkset_create(&links) == OPX_OK && opx_linkset_add_link(links, "sphere", &link) == OPX_OK &&
