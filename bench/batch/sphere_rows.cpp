@@ -37,23 +37,10 @@ paper_tables::OpxLinksetPtr one_sphere() {
     return links;
 }
 
-// A copy of the map, read back from its bytes: its obstacle grid is not
-// built yet, so that a first call's time includes building it.
-paper_tables::OpxOctreePtr fresh_copy(const opx_octree *tree) {
-    size_t size = 0;
-    opx_octree_save_memory(tree, OPX_FORMAT_OPX, nullptr, 0, &size);  // the size it needs
-    std::vector<unsigned char> bytes(size);
-    check_opx(opx_octree_save_memory(tree, OPX_FORMAT_OPX, bytes.data(), bytes.size(), &size),
-              "opx_octree_save_memory");
-    opx_octree *raw = nullptr;
-    check_opx(opx_octree_load_memory(bytes.data(), size, nullptr, &raw), "opx_octree_load_memory");
-    return paper_tables::OpxOctreePtr(raw);
-}
-
 // One batch call of the set's first configuration on a fresh copy of the
 // map, in microseconds.
 double first_batch_us(const Robot &arm, const Scene &scene, const ConfigurationSet &set) {
-    const paper_tables::OpxOctreePtr tree = fresh_copy(scene.tree.get());
+    const paper_tables::OpxOctreePtr tree = paper_tables::copy_octree(scene.tree.get());
     const paper_tables::OpxQueryPtr query = paper_tables::make_direct_query();
     opx_batch_request request = OPX_BATCH_REQUEST_INIT;
     uint8_t collided = 0;
@@ -80,7 +67,7 @@ SphereArmTiming time_sphere_arm(Robot &arm, const Scene &scene, size_t count, in
 }
 
 SphereCallTiming time_single_sphere_calls(const Scene &scene, size_t count, int rounds, bool link_set) {
-    const paper_tables::OpxOctreePtr tree = fresh_copy(scene.tree.get());
+    const paper_tables::OpxOctreePtr tree = paper_tables::copy_octree(scene.tree.get());
     const std::vector<opx_pose> poses = sphere_poses(tree.get(), count);
     const paper_tables::OpxLinksetPtr sphere = one_sphere();
     const paper_tables::OpxQueryPtr query = paper_tables::make_direct_query();

@@ -96,6 +96,17 @@ void check_opx(opx_status status, const char *what) {
     throw std::runtime_error(std::string(what) + " failed: " + opx_status_name(status) + ": " + opx_last_error());
 }
 
+OpxOctreePtr copy_octree(const opx_octree *tree) {
+    size_t size = 0;
+    opx_octree_save_memory(tree, OPX_FORMAT_OPX, nullptr, 0, &size);  // BUFFER_TOO_SMALL gives the size
+    std::vector<unsigned char> bytes(size);
+    check_opx(opx_octree_save_memory(tree, OPX_FORMAT_OPX, bytes.data(), bytes.size(), &size),
+              "opx_octree_save_memory");
+    opx_octree *raw = nullptr;
+    check_opx(opx_octree_load_memory(bytes.data(), size, nullptr, &raw), "opx_octree_load_memory");
+    return OpxOctreePtr(raw);
+}
+
 const char *variant_letter(Variant variant) { return variant == Variant::kPrimitives ? "a" : "b"; }
 
 TriangleMesh object_mesh(const SceneObject &object) {

@@ -23,6 +23,10 @@ struct OctreeDeleter {
 };
 using OpxOctreePtr = std::unique_ptr<opx_octree, OctreeDeleter>;
 
+// An identical copy of the map, read back from its .opx bytes: a new map
+// to the library (nothing built from the original is reused for it).
+OpxOctreePtr copy_octree(const opx_octree *tree);
+
 struct SceneParameters {
     double half_extent = 20.0;  // the environment is [-half, half]^3 m
     double resolution = 0.2;    // m

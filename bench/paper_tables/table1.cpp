@@ -228,14 +228,7 @@ void refined_vs_full(const Bench &bench, bool objects_collide) {
 // the context), so after the first frame its buffers are reused.  The
 // table's fresh contexts also pay the page faults of new buffers.
 double reused_context_build_ms(const Bench &bench, int rebuilds) {
-    size_t size = 0;
-    opx_octree_save_memory(bench.tree, OPX_FORMAT_OT, nullptr, 0, &size);  // BUFFER_TOO_SMALL gives the size
-    std::vector<char> bytes(size);
-    check_opx(opx_octree_save_memory(bench.tree, OPX_FORMAT_OT, bytes.data(), bytes.size(), &size),
-              "opx_octree_save_memory");
-    opx_octree *raw = nullptr;
-    check_opx(opx_octree_load_memory(bytes.data(), size, nullptr, &raw), "opx_octree_load_memory");
-    const OpxOctreePtr copy(raw);
+    const OpxOctreePtr copy = copy_octree(bench.tree);
     const OpxQueryPtr query = make_query(OPX_ENGINE_AMORTIZED, 1);
     std::vector<double> builds;
     uint64_t boxes = 0;
