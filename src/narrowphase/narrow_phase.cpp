@@ -87,23 +87,50 @@ double round_shape_gap(const Vec3 &center, const Eigen::Matrix3d &axes, double r
     return std::sqrt(side * side + along * along);
 }
 
+// A cell grown by the limit against the posed boxes of a mesh's triangle
+// tree (boxes in the mesh's own frame), on the face axes of both, as
+// oriented_box_may_touch: the mesh's axes first, in the mesh's frame,
+// where the cell's side of the test is the same for every node and a
+// node's costs three subtractions; the map's axes for the nodes left.
+class MeshNodeTest {
+public:
+    MeshNodeTest(const PlacedShape &shape, const Aabb &cell)
+        : rotation_(shape.core.axes), abs_rotation_(rotation_.cwiseAbs()), mesh_center_(shape.core.center),
+          cell_center_(cell.center()), cell_half_(cell.half_extent()),
+          cell_center_in_mesh_(rotation_.transpose() * (cell_center_ - mesh_center_)),
+          cell_reach_in_mesh_(abs_rotation_.transpose() * cell_half_) {}
+
+    bool may_touch(const Aabb &node_box) const {
+        const Vec3 node_center = node_box.center(), node_half = node_box.half_extent();
+        if ((((node_center - cell_center_in_mesh_).cwiseAbs() - node_half - cell_reach_in_mesh_).array() >
+             kTouchTolerance)
+                .any())
+            return false;
+        const Vec3 offset = rotation_ * node_center + mesh_center_ - cell_center_;
+        return !(((offset.cwiseAbs() - cell_half_ - abs_rotation_ * node_half).array() > kTouchTolerance).any());
+    }
+
+private:
+    const Eigen::Matrix3d &rotation_;
+    const Eigen::Matrix3d abs_rotation_;
+    const Vec3 mesh_center_, cell_center_, cell_half_, cell_center_in_mesh_, cell_reach_in_mesh_;
+};
+
 // Depth-first over the mesh's triangle tree in the mesh's own frame, so a
 // collision query never places the mesh (most queries touch a mesh in a few
 // nodes): a node's box, posed, is an oriented box, tested against the cell
-// grown by the limit on the face axes of both; a leaf's triangle is posed
-// (three vertices, as PlacedShape::place_mesh would) for the exact test.
+// grown by the limit (MeshNodeTest); a leaf's triangle is posed (three
+// vertices, as PlacedShape::place_mesh would) for the exact test.
 bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, const Vec3 &half,
                  uint64_t &narrow_tests) {
     const AabbTree &tree = shape.def->mesh_tree;
-    const Eigen::Matrix3d &rotation = shape.core.axes;
-    const Aabb cell = Aabb::from_center(center, half + Vec3::Constant(limit));
+    const MeshNodeTest test(shape, Aabb::from_center(center, half + Vec3::Constant(limit)));
     int32_t stack[64];
     int top = 0;
     stack[top++] = tree.root();
     while (top > 0) {
         const AabbTreeNode &node = tree.node(stack[--top]);
-        const Vec3 node_center = rotation * node.box.center() + shape.core.center;
-        if (!oriented_box_may_touch(node_center, rotation, node.box.half_extent(), cell)) continue;
+        if (!test.may_touch(node.box)) continue;
         if (node.is_leaf()) {
             ++narrow_tests;
             if (convex_within(shape.posed_triangle(node.item), limit, center, half)) return true;
