@@ -25,6 +25,13 @@ bool convex_within(const Convex &core, double limit, const Vec3 &center, const V
     return result.intersecting || result.distance <= limit;
 }
 
+// Whether two boxes whose centres lie `offset` apart, with half extents
+// `half` and `reach` along the same three axes, lie more than the touch
+// tolerance apart along one of them.
+bool apart_on_axes(const Vec3 &offset, const Vec3 &half, const Vec3 &reach) {
+    return ((offset.cwiseAbs() - half - reach).array() > kTouchTolerance).any();
+}
+
 // Oriented box (centre, axes, half) against an axis-aligned box, on the
 // face axes of both: conservative, since the 9 edge axes are not tried.
 bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, const Vec3 &half,
@@ -33,10 +40,10 @@ bool oriented_box_may_touch(const Vec3 &center, const Eigen::Matrix3d &axes, con
     const Vec3 offset = center - box.center();
     const Eigen::Matrix3d abs_axes = axes.cwiseAbs();
     const Vec3 reach = abs_axes * half;  // the oriented box's half extents along x, y, z
-    if (((offset.cwiseAbs() - box_half - reach).array() > kTouchTolerance).any()) return false;
+    if (apart_on_axes(offset, box_half, reach)) return false;
     const Vec3 local = axes.transpose() * offset;
     const Vec3 box_reach = abs_axes.transpose() * box_half;
-    return !((local.cwiseAbs() - half - box_reach).array() > kTouchTolerance).any();
+    return !apart_on_axes(local, half, box_reach);
 }
 
 // Along each of the three axes (columns of `axes`, unit): how far every
@@ -102,12 +109,9 @@ public:
 
     bool may_touch(const Aabb &node_box) const {
         const Vec3 node_center = node_box.center(), node_half = node_box.half_extent();
-        if ((((node_center - cell_center_in_mesh_).cwiseAbs() - node_half - cell_reach_in_mesh_).array() >
-             kTouchTolerance)
-                .any())
-            return false;
+        if (apart_on_axes(node_center - cell_center_in_mesh_, node_half, cell_reach_in_mesh_)) return false;
         const Vec3 offset = rotation_ * node_center + mesh_center_ - cell_center_;
-        return !(((offset.cwiseAbs() - cell_half_ - abs_rotation_ * node_half).array() > kTouchTolerance).any());
+        return !apart_on_axes(offset, cell_half_, abs_rotation_ * node_half);
     }
 
 private:
