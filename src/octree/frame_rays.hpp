@@ -35,11 +35,6 @@ struct FrameRays {
     std::vector<CellExtent> hit_extents;
     KeyBox box;  // keys of the origin and every end
 
-    size_t ray_count() const {
-        size_t count = 0;
-        for (const RaySegment &segment : segments) count += segment.ends.size();
-        return count;
-    }
     // Calls hit(key) with the key of every end that is an occupied cell.
     template <class Hit>
     void for_each_hit(Hit &&hit) const {
