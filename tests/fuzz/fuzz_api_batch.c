@@ -25,14 +25,11 @@ static void take_base(fuzz_input *in, const opx_octree *tree, opx_pose *base) {
 static int single_collides(opx_query *query, const opx_octree *tree, const opx_linkset *links, const double *row,
                            size_t joints, const opx_pose *base, const opx_batch_request *request) {
     opx_linkset *clone = NULL;
-    const opx_collision_request collision =
-        yes_no_request(request->unknown_policy, request->occupancy_threshold, request->obstacle_geometry);
-    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     int collided = -1;
     if (opx_linkset_clone(links, &clone) == OPX_OK &&
-        opx_linkset_set_joint_positions(clone, row, joints, base) == OPX_OK &&
-        opx_query_collide(query, tree, clone, &collision, &result) == OPX_OK)
-        collided = result.collided;
+        opx_linkset_set_joint_positions(clone, row, joints, base) == OPX_OK)
+        collided = yes_no_collides(query, tree, clone, request->unknown_policy, request->occupancy_threshold,
+                                   request->obstacle_geometry);
     opx_linkset_destroy(clone);
     return collided;
 }

@@ -55,13 +55,16 @@ void take_sphere_request(fuzz_input *in, opx_sphere_request *request) {
         geometry < 160 ? OPX_OBSTACLE_CELLS : geometry < 240 ? OPX_OBSTACLE_POINT_EXTENTS : geometry;
 }
 
-opx_collision_request yes_no_request(int32_t unknown_policy, double occupancy_threshold, int32_t obstacle_geometry) {
+int yes_no_collides(opx_query *query, const opx_octree *tree, const opx_linkset *links, int32_t unknown_policy,
+                    double occupancy_threshold, int32_t obstacle_geometry) {
     opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
     request.max_contacts = 0;
     request.unknown_policy = unknown_policy;
     request.occupancy_threshold = occupancy_threshold;
     request.obstacle_geometry = obstacle_geometry;
-    return request;
+    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
+    if (opx_query_collide(query, tree, links, &request, &result) != OPX_OK) return -1;
+    return result.collided;
 }
 
 void take_batch_request(fuzz_input *in, opx_batch_request *request) {

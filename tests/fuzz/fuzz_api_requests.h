@@ -14,8 +14,10 @@ void take_sphere_request(fuzz_input *in, opx_sphere_request *request);
 /* Collisions only (no distance, no self-collision), on 1 to 3 threads. */
 void take_batch_request(fuzz_input *in, opx_batch_request *request);
 
-/* A yes/no collision request (no contacts) with these settings. */
-opx_collision_request yes_no_request(int32_t unknown_policy, double occupancy_threshold, int32_t obstacle_geometry);
+/* Whether the links touch the map, as a yes/no opx_query_collide (no
+ * contacts) with these settings says; -1 when it refuses. */
+int yes_no_collides(opx_query *query, const opx_octree *tree, const opx_linkset *links, int32_t unknown_policy,
+                    double occupancy_threshold, int32_t obstacle_geometry);
 
 /* request NULL: the defaults. */
 void check_collision_result(const opx_collision_request *request, const opx_collision_result *result);

@@ -43,15 +43,12 @@ static int one_sphere_collides(opx_query *query, const opx_octree *tree, const d
     shape.radius = row[3];
     opx_pose pose = OPX_POSE_IDENTITY;
     for (int axis = 0; axis < 3; ++axis) pose.position[axis] = row[axis];
-    const opx_collision_request collision =
-        yes_no_request(request->unknown_policy, request->occupancy_threshold, request->obstacle_geometry);
-    opx_collision_result result = OPX_COLLISION_RESULT_INIT;
     int collided = -1;
     if (opx_linkset_create(&links) == OPX_OK && opx_linkset_add_link(links, "sphere", &link) == OPX_OK &&
         opx_linkset_add_shape(links, link, &shape, NULL) == OPX_OK &&
-        opx_linkset_set_poses(links, &pose, 1, 0) == OPX_OK &&
-        opx_query_collide(query, tree, links, &collision, &result) == OPX_OK)
-        collided = result.collided;
+        opx_linkset_set_poses(links, &pose, 1, 0) == OPX_OK)
+        collided = yes_no_collides(query, tree, links, request->unknown_policy, request->occupancy_threshold,
+                                   request->obstacle_geometry);
     opx_linkset_destroy(links);
     return collided;
 }
