@@ -4,10 +4,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace octoprox {
 
-void LinkBoxes::update(const LinkSet &links, bool with_attached) {
+uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count) {
+    uint64_t bits = 0;
+    for (size_t k = 0; k < count; ++k) {
+        const size_t j = first + k;
+        bool overlap = true;
+        for (int axis = 0; axis < 3; ++axis)
+            overlap &= (rows.lo[axis][j] <= rows.hi[axis][row]) & (rows.lo[axis][row] <= rows.hi[axis][j]);
+        bits |= static_cast<uint64_t>(overlap) << k;
+    }
+    return bits;
+}
+
+uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count) {
+    return box_rows_avx2_available() ? overlap_bits_avx2(rows, row, first, count)
+                                     : overlap_bits_portable(rows, row, first, count);
+}
+
+// Which bodies have boxes: those of enabled links with shapes.
+void LinkBoxes::lay_out(const LinkSet &links, bool with_attached) {
     const std::vector<PlacedShape> &placed = links.placed();
     const uint32_t link_count = static_cast<uint32_t>(links.link_count());
     ranges_.assign(link_count + links.attached_count(), Range());
@@ -16,42 +35,45 @@ void LinkBoxes::update(const LinkSet &links, bool with_attached) {
         Range &r = ranges_[attached < 0 ? placed[i].link : link_count + static_cast<uint32_t>(attached)];
         if (r.count++ == 0) r.first = i;
     }
-    sorted_.clear();
+    entries_.clear();
     const uint32_t bodies = with_attached ? static_cast<uint32_t>(ranges_.size()) : link_count;
     for (uint32_t body = 0; body < bodies; ++body) {
         const uint32_t link = body < link_count ? body : links.attached(body - link_count).link;
         if (ranges_[body].count == 0 || !links.link(link).enabled) continue;
-        Entry e{Aabb(), body, link};
-        for (uint32_t k = 0; k < ranges_[body].count; ++k) e.box.grow(placed[ranges_[body].first + k].box);
-        // Shapes within the touch tolerance collide: boxes that far apart
-        // must still overlap (their faces may differ by a rounding).
-        e.box.inflate(kTouchTolerance);
-        sorted_.push_back(e);
+        entries_.push_back(Entry{Aabb(), body, link});
     }
-    choose_axis();
-    std::sort(sorted_.begin(), sorted_.end(),
-              [&](const Entry &x, const Entry &y) { return x.box.lo[axis_] < y.box.lo[axis_]; });
+    const size_t padded = (entries_.size() + 3) / 4 * 4 + 4;
+    rows_.count = entries_.size();
+    for (int axis = 0; axis < 3; ++axis) {
+        rows_.lo[axis].assign(padded, std::numeric_limits<double>::infinity());
+        rows_.hi[axis].assign(padded, -std::numeric_limits<double>::infinity());
+    }
+    identity_ = links.identity(), generation_ = links.generation(), with_attached_ = with_attached;
+    laid_out_ = true;
 }
 
-// The axis along which the box centres spread most: the sweep then sees
-// the fewest boxes overlapping the current one on its axis alone.
-void LinkBoxes::choose_axis() {
-    if (sorted_.empty()) return;
-    Vec3 sum = Vec3::Zero(), squares = Vec3::Zero();
-    for (const Entry &e : sorted_) {
-        const Vec3 c = e.box.center();
-        sum += c, squares += c.cwiseProduct(c);
+void LinkBoxes::update(const LinkSet &links, bool with_attached) {
+    if (!laid_out_ || identity_ != links.identity() || generation_ != links.generation() ||
+        with_attached_ != with_attached)
+        lay_out(links, with_attached);
+    const std::vector<PlacedShape> &placed = links.placed();
+    for (size_t e = 0; e < entries_.size(); ++e) {
+        Entry &entry = entries_[e];
+        const Range &range = ranges_[entry.body];
+        entry.box = Aabb();
+        for (uint32_t k = 0; k < range.count; ++k) entry.box.grow(placed[range.first + k].box);
+        // Shapes within the touch tolerance collide: boxes that far apart
+        // must still overlap (their faces may differ by a rounding).
+        entry.box.inflate(kTouchTolerance);
+        for (int axis = 0; axis < 3; ++axis) rows_.lo[axis][e] = entry.box.lo[axis], rows_.hi[axis][e] = entry.box.hi[axis];
     }
-    const double n = static_cast<double>(sorted_.size());
-    const Vec3 spread = squares / n - (sum / n).cwiseProduct(sum / n);
-    spread.maxCoeff(&axis_);
 }
 
 void LinkBoxes::nearer_than(const BodyPairs &filter, double cutoff, std::vector<Candidate> &out) const {
     out.clear();
-    for (size_t i = 0; i < sorted_.size(); ++i) {
-        for (size_t j = i + 1; j < sorted_.size(); ++j) {
-            const Entry &x = sorted_[i], &y = sorted_[j];
+    for (size_t i = 0; i < entries_.size(); ++i) {
+        for (size_t j = i + 1; j < entries_.size(); ++j) {
+            const Entry &x = entries_[i], &y = entries_[j];
             if (!filter.enabled(x.body, y.body)) continue;
             const double lower = std::sqrt(x.box.squared_distance(y.box));
             if (lower >= cutoff) continue;

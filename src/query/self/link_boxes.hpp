@@ -1,9 +1,11 @@
 // The broad phase of self-collision: one box per body (a link's own padded
-// shapes, or an object attached to a link), swept along the axis where the
-// bodies spread most (sort and sweep), giving the pairs of bodies whose
-// boxes overlap; and, for distance, every pair with the distance of its
-// boxes.  A link set of n bodies costs a sort of n boxes plus the
-// overlapping pairs, not n^2 tests.
+// shapes, or an object attached to a link) and, for collision, the pairs
+// of bodies whose boxes overlap: each body's box tested against those of
+// the bodies after it, four at a time (AVX2 where the processor has it),
+// as bits without a branch.  For distance, every pair with the distance
+// of its boxes.  A set of n bodies costs n^2 / 2 box tests in lanes, a
+// few hundred nanoseconds for a PR2's 59, where a sort and sweep pays a
+// sort and a mispredicted branch per pair the sweep meets.
 //
 // Bodies are numbered links first (body l is link l), then attached
 // objects (body link_count + i is attached object i).
@@ -11,6 +13,7 @@
 
 #include "robot/linkset.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -44,24 +47,42 @@ private:
     uint32_t link_count_;
 };
 
+// The entries' boxes by coordinate, each column padded with empty boxes
+// (which overlap nothing) to a multiple of 4 plus 4, so four lanes may be
+// read from any entry.
+struct BoxRows {
+    std::vector<double> lo[3], hi[3];
+    size_t count = 0;  // entries before padding
+};
+
+// Bit k set when the box of entry `first + k` (k < count <= 64) overlaps
+// that of entry `row`.  The AVX2 and the portable loops give the same bits.
+uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count);
+bool box_rows_avx2_available();
+uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count);
+uint64_t overlap_bits_avx2(const BoxRows &rows, size_t row, size_t first, size_t count);
+
 class LinkBoxes {
 public:
     // The boxes of the bodies of enabled links that have shapes (attached
     // objects only `with_attached`), at the set's poses, grown by the touch
-    // tolerance.
+    // tolerance.  Which bodies those are is worked out again only when the
+    // set is another one or changed in more than its poses.
     void update(const LinkSet &links, bool with_attached = true);
 
     // Calls visit(pair) for each pair of bodies whose boxes overlap and
     // which `filter` enables, until visit returns true; returns true then.
+    // Pairs come by their first body, then their second, in body order.
     template <class Visit>
     bool overlapping(const BodyPairs &filter, Visit &&visit) const {
-        const size_t n = sorted_.size();
-        for (size_t i = 0; i < n; ++i) {
-            const Entry &x = sorted_[i];
-            for (size_t j = i + 1; j < n && sorted_[j].box.lo[axis_] <= x.box.hi[axis_]; ++j) {
-                const Entry &y = sorted_[j];
-                if (!x.box.overlaps(y.box) || !filter.enabled(x.body, y.body)) continue;
-                if (visit(ordered(x, y))) return true;
+        const size_t n = entries_.size();
+        for (size_t i = 0; i + 1 < n; ++i) {
+            for (size_t first = i + 1; first < n; first += 64) {
+                const size_t count = std::min<size_t>(64, n - first);
+                for (uint64_t bits = overlap_bits(rows_, i, first, count); bits != 0; bits &= bits - 1) {
+                    const Entry &x = entries_[i], &y = entries_[first + static_cast<size_t>(__builtin_ctzll(bits))];
+                    if (filter.enabled(x.body, y.body) && visit(ordered(x, y))) return true;
+                }
             }
         }
         return false;
@@ -92,11 +113,14 @@ private:
         return x.link < y.link || (x.link == y.link && x.body < y.body) ? LinkPair{x.body, y.body}
                                                                         : LinkPair{y.body, x.body};
     }
-    void choose_axis();
+    void lay_out(const LinkSet &links, bool with_attached);
 
-    std::vector<Entry> sorted_;   // by box.lo[axis_]
+    std::vector<Entry> entries_;  // by body
     std::vector<Range> ranges_;   // per body
-    int axis_ = 0;
+    BoxRows rows_;                // the entries' boxes
+    // The set and state the entries were laid out for.
+    uint64_t identity_ = 0, generation_ = 0;
+    bool with_attached_ = false, laid_out_ = false;
 };
 
 }  // namespace octoprox
