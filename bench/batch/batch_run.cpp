@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pipelines.hpp"
+#include "self_rows.hpp"
 #include "sphere_rows.hpp"
 
 namespace batch_bench {
@@ -13,6 +14,8 @@ namespace {
 
 constexpr uint64_t kSeed = 0xBA7C4u;
 constexpr size_t kMotions = 2000;
+// Self-distance calls timed per robot (each costs far more than a check).
+constexpr size_t kSelfDistanceConfigurations = 500;
 // Self-collision in the OctoProx pipelines (FCL always checks it).
 constexpr bool kSelfCollision = true;
 
@@ -52,8 +55,25 @@ bool check_agreement(const Robot &robot, const Scene &scene, const Timing &singl
     return bad == 0;
 }
 
-bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const RunOptions &options,
+// The robot against itself alone: map "robot alone".
+void self_rows(Robot &robot, const ConfigurationSet &set, FclCheck &fcl, const RunOptions &options,
                std::vector<Row> &rows) {
+    const SelfTiming t =
+        time_self_calls(robot, set, fcl, options.quick ? size_t(20) : kSelfDistanceConfigurations, options.rounds);
+    const char *alone = "robot alone";
+    rows.push_back(Row{robot.name, alone, "self collide call", t.collide_us,
+                       {{"configurations", double(t.configurations)}, {"collided", double(t.collided)}}});
+    rows.push_back(Row{robot.name, alone, "self distance call", t.distance_us,
+                       {{"configurations", double(t.distance_configurations)}}});
+    rows.push_back(Row{robot.name, alone, "fcl self collide", t.fcl_collide_us,
+                       {{"configurations", double(t.configurations)}, {"collided", double(t.fcl_collided)}}});
+    std::printf("  %s alone: %zu of %zu collide with themselves; FCL says %zu, %zu configurations differ\n",
+                robot.name.c_str(), t.collided, t.configurations, t.fcl_collided, t.differ);
+    std::fflush(stdout);
+}
+
+bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const RunOptions &options,
+               bool with_self_rows, std::vector<Row> &rows) {
     const ConfigurationSet set = draw_configurations(robot, base, options.configurations, kSeed, true);
     const Workload work{robot, scene, set, kSelfCollision, options.rounds};
     FclCheck fcl_check(robot, *scene.fcl_octree);
@@ -68,6 +88,7 @@ bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const Run
     const size_t motions = std::min(set.count, options.quick ? size_t(20) : kMotions);
     rows.push_back(motion_row(robot, scene, "motions batch 1 thread", time_motions(work, goals, motions, 1)));
     rows.push_back(motion_row(robot, scene, "motions batch 2 threads", time_motions(work, goals, motions, 2)));
+    if (with_self_rows) self_rows(robot, set, fcl_check, options, rows);
     return check_agreement(robot, scene, single, one, two, fcl);
 }
 
@@ -111,8 +132,8 @@ RunResult run_all(const RunOptions &options) {
     for (int which = 0; which < 2; ++which) {
         const Scene scene = which == 0 ? real_scene(pr2.links.get()) : room_scene(pr2.links.get());
         print_scene(scene);
-        result.agree &= run_robot(pr2, scene, scene.robot_base, options, result.rows);
-        result.agree &= run_robot(arm, scene, scene.arm_base, options, result.rows);
+        result.agree &= run_robot(pr2, scene, scene.robot_base, options, which == 0, result.rows);
+        result.agree &= run_robot(arm, scene, scene.arm_base, options, which == 0, result.rows);
         if (which == 0) sphere_rows(spheres, scene, options, result.rows);
     }
     return result;
