@@ -2,9 +2,10 @@
 // arm at random reachable configurations against the real 2 cm frame and
 // the generated room: the one-call-per-configuration way, the batch call on
 // 1 and 2 threads, and FCL (world + self-collision, its FK untimed), in
-// microseconds per configuration; motion checks per second; and the
-// sphere rows (a 50-sphere arm through the batch call, one sphere per
-// call).
+// microseconds per configuration; motion checks per second; each robot
+// against itself alone (self-collision and self-distance calls, and FCL's
+// self-collision); and the sphere rows (a 50-sphere arm through the batch
+// call, one sphere per call).
 //   opx-bench-batch [--quick] [--json FILE] [--configurations N]
 #include <cstdio>
 
