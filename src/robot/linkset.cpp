@@ -54,7 +54,7 @@ uint32_t LinkSet::add_shape(uint32_t link, ShapeDef def) {
     for (uint32_t later = link + 1; later < links_.size(); ++later) ++first_placed_[later];
     PlacedShape &placed = placed_[at];
     placed.link = link, placed.shape = shape;
-    place_shape(*l.shapes[shape], l.pose, padding_ + l.padding, l.enabled, placed);
+    place_shape(*l.shapes[shape], l.pose, padding_ + l.padding, l.enabled, placed, mesh_box_);
     mark_topology_stale();
     return shape;
 }
@@ -118,14 +118,14 @@ void LinkSet::place_link(uint32_t index) {
     for (uint32_t s = 0; s < l.shapes.size(); ++s, ++at) {
         PlacedShape &placed = placed_[at];
         placed.link = index, placed.shape = s, placed.attached = -1;
-        place_shape(*l.shapes[s], l.pose, padding, l.enabled, placed);
+        place_shape(*l.shapes[s], l.pose, padding, l.enabled, placed, mesh_box_);
     }
     for (uint32_t object : attached_by_link_[index]) {
         const AttachedObject &a = attached_[object];
         for (uint32_t s = 0; s < a.shapes.size(); ++s, ++at) {
             PlacedShape &placed = placed_[at];
             placed.link = index, placed.shape = s, placed.attached = static_cast<int32_t>(object);
-            place_shape(*a.shapes[s], l.pose, padding, l.enabled, placed);
+            place_shape(*a.shapes[s], l.pose, padding, l.enabled, placed, mesh_box_);
         }
     }
 }

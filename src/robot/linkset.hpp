@@ -60,6 +60,9 @@ public:
     void set_link_padding(uint32_t link, double padding);
     void set_link_enabled(uint32_t link, bool enabled);
     void set_poses(const std::vector<Pose> &poses);
+    // The box meshes get from the next placements on (shape.hpp): a batch's
+    // own copy asks for kCheap.  Answers do not depend on it.
+    void set_mesh_box(MeshBox mesh_box) { mesh_box_ = mesh_box; }
     // Whether self-collision queries check links a and b (a != b).
     void set_pair_enabled(uint32_t a, uint32_t b, bool enabled);
     const LinkPairs &pairs() const { return pairs_; }
@@ -119,6 +122,7 @@ private:
     std::vector<std::vector<uint32_t>> attached_by_link_;
     LinkPairs pairs_;
     double padding_ = 0.0;
+    MeshBox mesh_box_ = MeshBox::kTight;
     std::vector<PlacedShape> placed_;
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_
     // Built by the first tree() after a change of the shapes: mutable,

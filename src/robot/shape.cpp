@@ -18,8 +18,17 @@ void triangle_boxes(const std::vector<Vec3> &vertices, const std::vector<std::ar
     for (const auto &t : triangles) boxes.push_back(triangle_box(vertices[t[0]], vertices[t[1]], vertices[t[2]]));
 }
 
+// A mesh's shape-frame box placed, padded by 1e-12 relative as
+// placed_union pads (box_columns.hpp) for the rounding here and where the
+// vertices are placed.
+Aabb placed_local_box(const Convex &core, const Aabb &local) {
+    Aabb placed = Aabb::from_center(core.axes * local.center() + core.center, core.axes.cwiseAbs() * local.half_extent());
+    placed.inflate(1e-12 * (1.0 + core.center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
+    return placed;
+}
+
 // Bounds of the core in the map frame, before inflation.
-Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
+Aabb core_box(const PlacedShape &s, const ShapeDef &def, MeshBox mesh_box) {
     const Convex &core = s.core;
     switch (def.kind) {
     case ShapeKind::kSphere: return Aabb::from_center(core.center, Vec3::Zero());
@@ -38,7 +47,9 @@ Aabb core_box(const PlacedShape &s, const ShapeDef &def) {
         for (const Vec3 &v : s.world_vertices) box.grow(v);
         return box;
     }
-    case ShapeKind::kMesh: return placed_union(def.bounds, core.axes, core.center);
+    case ShapeKind::kMesh:
+        return mesh_box == MeshBox::kCheap && !def.local_box.empty() ? placed_local_box(core, def.local_box)
+                                                                     : placed_union(def.bounds, core.axes, core.center);
     }
     return Aabb();
 }
@@ -52,6 +63,10 @@ void build_mesh_tree(ShapeDef &def) {
     // Few vertices: the exact box costs about as much as the frontier's.
     def.bounds = def.vertices.size() > kExactBoxVertices ? box_columns(mesh_frontier_boxes(def.mesh_tree))
                                                          : point_columns(def.vertices);
+    def.local_box = Aabb();
+    if (def.mesh_tree.empty()) return;
+    const Aabb &local = def.mesh_tree.node(def.mesh_tree.root()).box;
+    if (rotated_box_looseness(local, def.vertices) <= kCheapBoxLooseness) def.local_box = local;
 }
 
 void PlacedShape::place_mesh() const {
@@ -108,8 +123,8 @@ void place_sphere(const ShapeDef &def, const Pose &link_pose, double padding, bo
 
 }  // namespace
 
-void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled,
-                 PlacedShape &out) {
+void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled, PlacedShape &out,
+                 MeshBox mesh_box) {
     if (def.kind == ShapeKind::kSphere) return place_sphere(def, link_pose, padding, enabled, out);
     const Eigen::Matrix3d rotation = link_pose.rotation * def.local.rotation;
     const Vec3 center = link_pose.apply(def.local.translation);
@@ -153,7 +168,7 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
     }
     out.box = Aabb();
     if (enabled) {
-        out.box = core_box(out, def);
+        out.box = core_box(out, def, mesh_box);
         out.box.inflate(out.inflation);
     }
 }

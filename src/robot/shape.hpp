@@ -37,6 +37,9 @@ struct ShapeDef {
     // whose union bounds the mesh a little loosely for the price of a few
     // dozen flops each, where the exact box needs every vertex.
     BoxColumns bounds;
+    // Mesh: its shape-frame box (the triangle tree's root box) when the
+    // mesh fits it well (kCheapBoxLooseness); else empty.
+    Aabb local_box;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.
@@ -120,9 +123,15 @@ private:
     }
 };
 
+// Which box a mesh gets when placed: the tight one (its vertices' box or
+// its frontier boxes' union), or, where each pose is checked once (a
+// batch's own copy of a robot), its placed shape-frame box when it has
+// one: cheaper to place, looser to cull with; the answers are the same.
+enum class MeshBox { kTight, kCheap };
+
 // Places `def` at link pose `link_pose` with `padding`; enabled=false
 // leaves an empty box so the shape takes part in nothing.
-void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled,
-                 PlacedShape &out);
+void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, bool enabled, PlacedShape &out,
+                 MeshBox mesh_box = MeshBox::kTight);
 
 }  // namespace octoprox

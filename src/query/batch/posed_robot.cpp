@@ -5,6 +5,8 @@ namespace octoprox {
 void PosedRobot::bind(const LinkSet &links, const JointTree &joints) {
     if (!copy_ || source_ != links.identity() || copy_->generation() != links.generation()) {
         copy_ = std::make_unique<LinkSet>(links);
+        // Each pose of the copy is checked once: cheap mesh boxes pay.
+        copy_->set_mesh_box(MeshBox::kCheap);
         source_ = links.identity();
     }
     joints_ = &joints;
