@@ -70,8 +70,9 @@ struct PlacedShapeFields {
     Convex core;             // every kind but mesh (a mesh's core holds only its pose: center, axes)
     // Bounds of the inflated shape, empty when disabled: exact for every
     // kind but a mesh of many vertices, whose box is the union of its
-    // placed frontier boxes (bounds for culling; exact_box() gives the
-    // tight one).
+    // placed frontier boxes, or a mesh placed with MeshBox::kCheap, whose
+    // box may be its placed shape-frame box (bounds for culling;
+    // exact_box() gives the tight one).
     Aabb box;
     // Convex hull: map frame.  Mesh: map frame once place_mesh() ran.
     mutable std::vector<Vec3> world_vertices;
