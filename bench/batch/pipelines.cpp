@@ -22,19 +22,25 @@ double timed_ms(Run &&run) {
 }  // namespace
 
 std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pipeline> &pipelines) {
-    const size_t n = pipelines.size();
+    const size_t n = pipelines.size(), count = work.set.count;
     std::vector<Timing> timings(n);
     std::vector<std::vector<double>> us(n);
-    std::vector<uint8_t> scratch(work.set.count);
+    std::vector<uint8_t> scratch(count);
     for (size_t p = 0; p < n; ++p) {
-        timings[p].collided.assign(work.set.count, 0);
-        pipelines[p](timings[p].collided);
+        timings[p].collided.assign(count, 0);
+        pipelines[p](timings[p].collided, 0, count);
     }
-    for (int round = 0; round < work.rounds; ++round)
-        for (size_t k = 0; k < n; ++k) {
-            const size_t p = (k + size_t(round)) % n;
-            us[p].push_back(1000.0 * pipelines[p](scratch) / double(work.set.count));
+    for (int round = 0; round < work.rounds; ++round) {
+        std::vector<double> ms(n, 0.0);
+        for (size_t begin = 0, chunk = 0; begin < count; begin += kChunkConfigurations, ++chunk) {
+            const size_t end = std::min(count, begin + kChunkConfigurations);
+            for (size_t k = 0; k < n; ++k) {
+                const size_t p = (k + size_t(round) + chunk) % n;
+                ms[p] += pipelines[p](scratch, begin, end);
+            }
         }
+        for (size_t p = 0; p < n; ++p) us[p].push_back(1000.0 * ms[p] / double(count));
+    }
     for (size_t p = 0; p < n; ++p) {
         timings[p].us_per_configuration = paper_tables::median(us[p]);
         timings[p].fastest_us = *std::min_element(us[p].begin(), us[p].end());
@@ -44,14 +50,14 @@ std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pip
 
 Pipeline single_calls(const Workload &work) {
     std::shared_ptr<opx_query> query = make_query();
-    return [&work, query](std::vector<uint8_t> &collided) {
+    return [&work, query](std::vector<uint8_t> &collided, size_t begin, size_t end) {
         opx_linkset *links = work.robot.links.get();
         opx_collision_request request = OPX_COLLISION_REQUEST_INIT;
         request.max_contacts = 0;
         opx_self_collision_request self_request = OPX_SELF_COLLISION_REQUEST_INIT;
         self_request.max_contacts = 0;
         return timed_ms([&] {
-            for (size_t i = 0; i < work.set.count; ++i) {
+            for (size_t i = begin; i < end; ++i) {
                 check_opx(opx_linkset_set_joint_positions(links, work.set.row(i), work.set.joints, &work.set.base),
                           "opx_linkset_set_joint_positions");
                 opx_collision_result result = OPX_COLLISION_RESULT_INIT;
@@ -71,15 +77,15 @@ Pipeline single_calls(const Workload &work) {
 
 Pipeline batch_call(const Workload &work, uint32_t threads) {
     std::shared_ptr<opx_query> query = make_query();
-    return [&work, query, threads](std::vector<uint8_t> &collided) {
+    return [&work, query, threads](std::vector<uint8_t> &collided, size_t begin, size_t end) {
         opx_batch_request request = OPX_BATCH_REQUEST_INIT;
         request.max_threads = threads;
         request.self_collision = work.self_collision ? 1 : 0;
         return timed_ms([&] {
             check_opx(opx_query_check_configurations(query.get(), work.scene.tree.get(), work.robot.links.get(),
-                                                     work.set.rows.data(), work.set.count, work.set.joints, 0,
-                                                     &work.set.base, 1, 0, &request, collided.data(), nullptr,
-                                                     work.set.count),
+                                                     work.set.row(begin), end - begin, work.set.joints, 0,
+                                                     &work.set.base, 1, 0, &request, collided.data() + begin,
+                                                     nullptr, end - begin),
                       "opx_query_check_configurations");
         });
     };
@@ -87,9 +93,9 @@ Pipeline batch_call(const Workload &work, uint32_t threads) {
 
 // Per configuration: place the objects (untimed), then time world and self.
 Pipeline fcl_calls(const Workload &work, FclCheck &fcl) {
-    return [&work, &fcl](std::vector<uint8_t> &collided) {
+    return [&work, &fcl](std::vector<uint8_t> &collided, size_t begin, size_t end) {
         double total_ms = 0.0;
-        for (size_t i = 0; i < work.set.count; ++i) {
+        for (size_t i = begin; i < end; ++i) {
             fcl.place(work.set.poses[i]);
             bool hit = false;
             total_ms += paper_tables::time_once_ms([&] { hit = fcl.world_collides() || fcl.self_collides(); });

@@ -31,17 +31,20 @@ struct Workload {
     int rounds = 3;
 };
 
-// A pipeline answers every configuration of the set into `collided` and
-// returns the milliseconds of its timed part.
-using Pipeline = std::function<double(std::vector<uint8_t> &collided)>;
+// A pipeline answers configurations [begin, end) of the set into the same
+// entries of `collided` and returns the milliseconds of its timed part.
+using Pipeline = std::function<double(std::vector<uint8_t> &collided, size_t begin, size_t end)>;
 
 Pipeline single_calls(const Workload &work);
 Pipeline batch_call(const Workload &work, uint32_t threads);
 Pipeline fcl_calls(const Workload &work, FclCheck &fcl);
 
-// Each pipeline once untimed (its answers), then work.rounds rounds of
-// every pipeline in turn, the order rotating, so that a change of the
-// machine's load (other work on a shared machine) hits all alike.
+// Each pipeline once untimed (its answers), then work.rounds rounds; a
+// round goes through the set in chunks of kChunkConfigurations, every
+// pipeline answering a chunk before the next chunk, the order rotating.
+// A change of the machine's speed (other work on a shared machine) so
+// hits every pipeline alike, even FCL's, which takes ten times as long.
+constexpr size_t kChunkConfigurations = 1000;
 std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pipeline> &pipelines);
 
 constexpr double kMotionResolution = 0.02;  // rad
