@@ -3,15 +3,14 @@
 // division per axis shared by four rays.
 #include "octree/ray_setup.hpp"
 
+#include "base/avx2.hpp"
+
 #include <limits>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
+#if defined(OPX_AVX2_LANES)
 
 namespace octoprox {
 namespace {
-
-#define OPX_AVX2 __attribute__((target("avx2")))
 
 // Four floats' step direction: 1, -1 or 0.
 OPX_AVX2 __m128i step_of(__m128 d) {

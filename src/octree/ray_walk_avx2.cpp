@@ -9,22 +9,15 @@
 #include "octree/ray_queue.hpp"
 #include "octree/ray_walk.hpp"
 
-#include <limits>
+#include "base/avx2.hpp"
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define OPX_HAS_FOUR_LANES 1
-#define OPX_AVX2 __attribute__((target("avx2")))
-#endif
+#include <limits>
 
 namespace octoprox {
 
-#if defined(OPX_HAS_FOUR_LANES)
+bool four_lanes_available() { return cpu_has_avx2(); }
 
-bool four_lanes_available() {
-    static const bool available = __builtin_cpu_supports("avx2");
-    return available;
-}
+#if defined(OPX_AVX2_LANES)
 
 namespace {
 
@@ -184,8 +177,6 @@ OPX_AVX2 void walk_four(RayQueue &queue, FrameMarks &marks) {
 }
 
 #else
-
-bool four_lanes_available() { return false; }
 
 void walk_four(RayQueue &, FrameMarks &) {}
 

@@ -3,20 +3,13 @@
 // where the processor has AVX2; box_columns.cpp asks).
 #include "robot/box_columns.hpp"
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define OPX_BOX_LANES 1
-#define OPX_AVX2 __attribute__((target("avx2")))
-#endif
+#include "base/avx2.hpp"
 
 namespace octoprox {
 
-#if defined(OPX_BOX_LANES)
+bool box_columns_avx2_available() { return cpu_has_avx2(); }
 
-bool box_columns_avx2_available() {
-    static const bool available = __builtin_cpu_supports("avx2");
-    return available;
-}
+#if defined(OPX_AVX2_LANES)
 
 namespace {
 
@@ -59,7 +52,6 @@ OPX_AVX2 void placed_union_avx2(const BoxColumns &boxes, const double r[3][3], c
 
 #else
 
-bool box_columns_avx2_available() { return false; }
 void placed_union_avx2(const BoxColumns &, const double[3][3], const double[3][3], const double[3], double[3],
                        double[3]) {}
 

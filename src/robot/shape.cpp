@@ -22,7 +22,8 @@ void triangle_boxes(const std::vector<Vec3> &vertices, const std::vector<std::ar
 // placed_union pads (box_columns.hpp) for the rounding here and where the
 // vertices are placed.
 Aabb placed_local_box(const Convex &core, const Aabb &local) {
-    Aabb placed = Aabb::from_center(core.axes * local.center() + core.center, core.axes.cwiseAbs() * local.half_extent());
+    Aabb placed = Aabb::from_center(core.axes * local.center() + core.center,
+                                    core.axes.cwiseAbs() * local.half_extent());
     placed.inflate(1e-12 * (1.0 + core.center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
     return placed;
 }

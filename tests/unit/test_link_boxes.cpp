@@ -36,7 +36,10 @@ BoxRows rows_of(const std::vector<Aabb> &boxes) {
     for (int axis = 0; axis < 3; ++axis) {
         rows.lo[axis].assign(padded, std::numeric_limits<double>::infinity());
         rows.hi[axis].assign(padded, -std::numeric_limits<double>::infinity());
-        for (size_t i = 0; i < boxes.size(); ++i) rows.lo[axis][i] = boxes[i].lo[axis], rows.hi[axis][i] = boxes[i].hi[axis];
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            rows.lo[axis][i] = boxes[i].lo[axis];
+            rows.hi[axis][i] = boxes[i].hi[axis];
+        }
     }
     return rows;
 }

@@ -108,7 +108,8 @@ ShapeDef box_mesh(const Vec3 &half) {
     ShapeDef def;
     def.kind = ShapeKind::kMesh;
     for (int i = 0; i < 8; ++i)
-        def.vertices.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z());
+        def.vertices.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(),
+                                  i & 4 ? half.z() : -half.z());
     def.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
     build_mesh_tree(def);

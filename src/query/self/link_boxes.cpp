@@ -65,7 +65,10 @@ void LinkBoxes::update(const LinkSet &links, bool with_attached) {
         // Shapes within the touch tolerance collide: boxes that far apart
         // must still overlap (their faces may differ by a rounding).
         entry.box.inflate(kTouchTolerance);
-        for (int axis = 0; axis < 3; ++axis) rows_.lo[axis][e] = entry.box.lo[axis], rows_.hi[axis][e] = entry.box.hi[axis];
+        for (int axis = 0; axis < 3; ++axis) {
+            rows_.lo[axis][e] = entry.box.lo[axis];
+            rows_.hi[axis][e] = entry.box.hi[axis];
+        }
     }
 }
 

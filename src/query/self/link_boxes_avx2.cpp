@@ -3,20 +3,13 @@
 // processor has AVX2; link_boxes.cpp asks).
 #include "query/self/link_boxes.hpp"
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define OPX_BOX_ROW_LANES 1
-#define OPX_AVX2 __attribute__((target("avx2")))
-#endif
+#include "base/avx2.hpp"
 
 namespace octoprox {
 
-#if defined(OPX_BOX_ROW_LANES)
+bool box_rows_avx2_available() { return cpu_has_avx2(); }
 
-bool box_rows_avx2_available() {
-    static const bool available = __builtin_cpu_supports("avx2");
-    return available;
-}
+#if defined(OPX_AVX2_LANES)
 
 // Lanes past `count` may hold later entries or padding: their bits are
 // cleared at the end.
@@ -40,7 +33,6 @@ OPX_AVX2 uint64_t overlap_bits_avx2(const BoxRows &rows, size_t row, size_t firs
 
 #else
 
-bool box_rows_avx2_available() { return false; }
 uint64_t overlap_bits_avx2(const BoxRows &, size_t, size_t, size_t) { return 0; }
 
 #endif
