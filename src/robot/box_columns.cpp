@@ -70,8 +70,12 @@ Aabb placed_union(const BoxColumns &boxes, const Eigen::Matrix3d &rotation, cons
     if (box_columns_avx2_available()) placed_union_avx2(boxes, r, s, t, lo, hi);
     else placed_union_portable(boxes, r, s, t, lo, hi);
     Aabb placed{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
-    placed.inflate(1e-12 * (1.0 + center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
+    pad_placed_box(placed, center);
     return placed;
+}
+
+void pad_placed_box(Aabb &placed, const Vec3 &center) {
+    placed.inflate(1e-12 * (1.0 + center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
 }
 
 }  // namespace octoprox

@@ -21,10 +21,14 @@ BoxColumns box_columns(const std::vector<Aabb> &boxes);
 BoxColumns point_columns(const std::vector<Vec3> &points);
 
 // The union of the boxes after p -> rotation * p + center, each placed as
-// the axis-aligned box of the rotated box, padded by 1e-12 relative for
-// the rounding here and where the vertices are placed (place_mesh).  An
+// the axis-aligned box of the rotated box, padded (pad_placed_box).  An
 // empty box for no boxes.
 Aabb placed_union(const BoxColumns &boxes, const Eigen::Matrix3d &rotation, const Vec3 &center);
+
+// Grows a box placed by p -> rotation * p + center by 1e-12 relative, for
+// the rounding of placing it and of placing the vertices it bounds
+// (place_mesh): the box still holds every placed vertex.
+void pad_placed_box(Aabb &placed, const Vec3 &center);
 
 // The AVX2 and the portable loops behind placed_union (box_columns_avx2.cpp,
 // box_columns.cpp): lo and hi of the union before padding, grown from

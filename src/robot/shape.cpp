@@ -18,13 +18,11 @@ void triangle_boxes(const std::vector<Vec3> &vertices, const std::vector<std::ar
     for (const auto &t : triangles) boxes.push_back(triangle_box(vertices[t[0]], vertices[t[1]], vertices[t[2]]));
 }
 
-// A mesh's shape-frame box placed, padded by 1e-12 relative as
-// placed_union pads (box_columns.hpp) for the rounding here and where the
-// vertices are placed.
+// A mesh's shape-frame box placed, padded as placed_union pads.
 Aabb placed_local_box(const Convex &core, const Aabb &local) {
     Aabb placed = Aabb::from_center(core.axes * local.center() + core.center,
                                     core.axes.cwiseAbs() * local.half_extent());
-    placed.inflate(1e-12 * (1.0 + core.center.cwiseAbs().maxCoeff() + (placed.hi - placed.lo).maxCoeff()));
+    pad_placed_box(placed, core.center);
     return placed;
 }
 
