@@ -1,5 +1,7 @@
 #include "robot/box_columns.hpp"
 
+#include "base/avx2.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -67,7 +69,7 @@ Aabb placed_union(const BoxColumns &boxes, const Eigen::Matrix3d &rotation, cons
         t[i] = center[i];
         lo[i] = std::numeric_limits<double>::infinity(), hi[i] = -lo[i];
     }
-    if (box_columns_avx2_available()) placed_union_avx2(boxes, r, s, t, lo, hi);
+    if (cpu_has_avx2()) placed_union_avx2(boxes, r, s, t, lo, hi);
     else placed_union_portable(boxes, r, s, t, lo, hi);
     Aabb placed{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
     pad_placed_box(placed, center);

@@ -30,10 +30,10 @@ Aabb placed_union(const BoxColumns &boxes, const Eigen::Matrix3d &rotation, cons
 // (place_mesh): the box still holds every placed vertex.
 void pad_placed_box(Aabb &placed, const Vec3 &center);
 
-// The AVX2 and the portable loops behind placed_union (box_columns_avx2.cpp,
-// box_columns.cpp): lo and hi of the union before padding, grown from
-// their values on entry; both round alike (no fused multiply-add).
-bool box_columns_avx2_available();
+// The AVX2 (where cpu_has_avx2(), base/avx2.hpp) and the portable loops
+// behind placed_union (box_columns_avx2.cpp, box_columns.cpp): lo and hi of
+// the union before padding, grown from their values on entry; both round
+// alike (no fused multiply-add).
 void placed_union_portable(const BoxColumns &boxes, const double r[3][3], const double s[3][3], const double t[3],
                            double lo[3], double hi[3]);
 void placed_union_avx2(const BoxColumns &boxes, const double r[3][3], const double s[3][3], const double t[3],

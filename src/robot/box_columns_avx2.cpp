@@ -7,8 +7,6 @@
 
 namespace octoprox {
 
-bool box_columns_avx2_available() { return cpu_has_avx2(); }
-
 #if defined(OPX_AVX2_LANES)
 
 namespace {

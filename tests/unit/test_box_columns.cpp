@@ -3,6 +3,7 @@
 // every placed corner and point, and is the tight union to within its
 // rounding pad (1e-12 relative); the AVX2 and the portable loops agree bit
 // for bit.
+#include "base/avx2.hpp"
 #include "robot/box_columns.hpp"
 
 #include <gtest/gtest.h>
@@ -44,7 +45,7 @@ void expect_tight_hull(const Aabb &got, const Aabb &exact, int count) {
 TEST(BoxColumns, UnionOfPlacedBoxesIsTightAndHoldsEveryCorner) {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> coordinate(-2.0, 2.0), edge(0.0, 0.5);
-    std::printf("placed by %s\n", box_columns_avx2_available() ? "AVX2 lanes" : "the portable loop");
+    std::printf("placed by %s\n", cpu_has_avx2() ? "AVX2 lanes" : "the portable loop");
     for (int count = 1; count <= 40; ++count) {
         std::vector<Aabb> boxes;
         for (int b = 0; b < count; ++b) {
@@ -76,7 +77,7 @@ TEST(BoxColumns, PointsGiveTheirExactBox) {
 }
 
 TEST(BoxColumns, BothLoopsGiveTheSameBox) {
-    if (!box_columns_avx2_available()) GTEST_SKIP() << "no AVX2 here";
+    if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 here";
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> coordinate(-2.0, 2.0), edge(0.0, 0.5);
     for (int count = 1; count <= 23; ++count) {

@@ -2,6 +2,7 @@
 // portable loops give, bit for bit, what Aabb::overlaps says, for boxes
 // that overlap, touch on a face or an edge, or miss by one rounding, over
 // more entries than one 64-bit word holds and at every row and start.
+#include "base/avx2.hpp"
 #include "query/self/link_boxes.hpp"
 
 #include <gtest/gtest.h>
@@ -31,7 +32,6 @@ std::vector<Aabb> lattice_boxes(size_t count, unsigned seed) {
 
 BoxRows rows_of(const std::vector<Aabb> &boxes) {
     BoxRows rows;
-    rows.count = boxes.size();
     const size_t padded = (boxes.size() + 3) / 4 * 4 + 4;
     for (int axis = 0; axis < 3; ++axis) {
         rows.lo[axis].assign(padded, std::numeric_limits<double>::infinity());
@@ -52,7 +52,7 @@ uint64_t expected_bits(const std::vector<Aabb> &boxes, size_t row, size_t first,
 }
 
 TEST(LinkBoxes, OverlapBitsAreTheBoxTest) {
-    std::printf("tested by %s\n", box_rows_avx2_available() ? "AVX2 lanes and the portable loop" : "the portable loop");
+    std::printf("tested by %s\n", cpu_has_avx2() ? "AVX2 lanes and the portable loop" : "the portable loop");
     for (unsigned seed = 1; seed <= 20; ++seed) {
         const std::vector<Aabb> boxes = lattice_boxes(70 + seed, seed);
         const BoxRows rows = rows_of(boxes);
@@ -61,7 +61,7 @@ TEST(LinkBoxes, OverlapBitsAreTheBoxTest) {
                 const size_t count = std::min<size_t>(64, boxes.size() - first);
                 const uint64_t expected = expected_bits(boxes, row, first, count);
                 EXPECT_EQ(overlap_bits_portable(rows, row, first, count), expected) << row << " " << first;
-                if (box_rows_avx2_available()) {
+                if (cpu_has_avx2()) {
                     EXPECT_EQ(overlap_bits_avx2(rows, row, first, count), expected) << row << " " << first;
                 }
             }

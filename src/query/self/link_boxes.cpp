@@ -1,5 +1,6 @@
 #include "query/self/link_boxes.hpp"
 
+#include "base/avx2.hpp"
 #include "narrowphase/narrow_phase.hpp"
 
 #include <algorithm>
@@ -21,7 +22,7 @@ uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, si
 }
 
 uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count) {
-    return box_rows_avx2_available() ? overlap_bits_avx2(rows, row, first, count)
+    return cpu_has_avx2() ? overlap_bits_avx2(rows, row, first, count)
                                      : overlap_bits_portable(rows, row, first, count);
 }
 
@@ -43,18 +44,15 @@ void LinkBoxes::lay_out(const LinkSet &links, bool with_attached) {
         entries_.push_back(Entry{Aabb(), body, link});
     }
     const size_t padded = (entries_.size() + 3) / 4 * 4 + 4;
-    rows_.count = entries_.size();
     for (int axis = 0; axis < 3; ++axis) {
         rows_.lo[axis].assign(padded, std::numeric_limits<double>::infinity());
         rows_.hi[axis].assign(padded, -std::numeric_limits<double>::infinity());
     }
     identity_ = links.identity(), generation_ = links.generation(), with_attached_ = with_attached;
-    laid_out_ = true;
 }
 
 void LinkBoxes::update(const LinkSet &links, bool with_attached) {
-    if (!laid_out_ || identity_ != links.identity() || generation_ != links.generation() ||
-        with_attached_ != with_attached)
+    if (identity_ != links.identity() || generation_ != links.generation() || with_attached_ != with_attached)
         lay_out(links, with_attached);
     const std::vector<PlacedShape> &placed = links.placed();
     for (size_t e = 0; e < entries_.size(); ++e) {

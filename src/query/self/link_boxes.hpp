@@ -52,13 +52,12 @@ private:
 // read from any entry.
 struct BoxRows {
     std::vector<double> lo[3], hi[3];
-    size_t count = 0;  // entries before padding
 };
 
 // Bit k set when the box of entry `first + k` (k < count <= 64) overlaps
-// that of entry `row`.  The AVX2 and the portable loops give the same bits.
+// that of entry `row`.  The AVX2 loop (where cpu_has_avx2(), base/avx2.hpp)
+// and the portable one give the same bits.
 uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count);
-bool box_rows_avx2_available();
 uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count);
 uint64_t overlap_bits_avx2(const BoxRows &rows, size_t row, size_t first, size_t count);
 
@@ -118,9 +117,10 @@ private:
     std::vector<Entry> entries_;  // by body
     std::vector<Range> ranges_;   // per body
     BoxRows rows_;                // the entries' boxes
-    // The set and state the entries were laid out for.
+    // The set and state the entries were laid out for; identity 0: none
+    // yet (link sets' identities start at 1).
     uint64_t identity_ = 0, generation_ = 0;
-    bool with_attached_ = false, laid_out_ = false;
+    bool with_attached_ = false;
 };
 
 }  // namespace octoprox

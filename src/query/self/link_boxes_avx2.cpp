@@ -7,8 +7,6 @@
 
 namespace octoprox {
 
-bool box_rows_avx2_available() { return cpu_has_avx2(); }
-
 #if defined(OPX_AVX2_LANES)
 
 // Lanes past `count` may hold later entries or padding: their bits are
