@@ -188,6 +188,14 @@ bool shape_may_touch(const PlacedShape &shape, const Aabb &box) {
         const double half_length = 0.5 * (core.v[1] - core.v[0]).norm();
         return oriented_box_may_touch(core.center, core.axes, Vec3(inflation, inflation, half_length + inflation), box);
     }
+    case ShapeKind::kMesh: {
+        // The box of the mesh's triangle tree, in the mesh's frame, posed.
+        const AabbTree &tree = shape.def->mesh_tree;
+        if (tree.empty()) return true;
+        const Aabb &root = tree.node(tree.root()).box;
+        return oriented_box_may_touch(core.center + core.axes * root.center(), core.axes,
+                                      root.half_extent() + Vec3::Constant(inflation), box);
+    }
     default: return true;
     }
 }

@@ -18,8 +18,9 @@ bool shape_touches_cell(const PlacedShape &shape, const Vec3 &cell_center, const
 
 // A cheap conservative test for octree descent: false only when the shape
 // surely does not touch the box.  Tighter than the shape's bounding box
-// for spheres (true distance) and for rotated boxes, cylinders and
-// capsules (their oriented box, by the 6 face axes).
+// for spheres (true distance) and for rotated boxes, cylinders, capsules
+// and meshes (their oriented box, by the 6 face axes; a mesh's is its
+// triangle tree's box in its own frame).
 bool shape_may_touch(const PlacedShape &shape, const Aabb &box);
 
 // A lower bound of the padded shape's distance to the box (may be

@@ -3,7 +3,9 @@
 // and capsules, padded, at random poses against random cells; and for
 // cylinders and capsules tight beside the round side, where the gap of
 // their oriented box is not (a cell off the side at 45 degrees between
-// the box's faces).
+// the box's faces).  The collision descents' test (shape_may_touch) never
+// says "apart" of a cell the shape touches, meshes included, down to
+// cells a picometre inside the touch limit.
 #include "narrowphase/narrow_phase.hpp"
 #include "narrowphase/shape_distance.hpp"
 
@@ -34,6 +36,19 @@ ShapeDef random_def(std::mt19937_64 &rng, ShapeKind kind) {
     def.radius = size(rng);
     def.half_length = size(rng);
     def.half_size = Vec3(size(rng), size(rng), size(rng));
+    return def;
+}
+
+// A random triangle soup, off the shape frame's origin.
+ShapeDef random_mesh(std::mt19937_64 &rng) {
+    std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
+    const Vec3 offset(coordinate(rng), coordinate(rng), coordinate(rng));
+    ShapeDef def;
+    def.kind = ShapeKind::kMesh;
+    for (int i = 0; i < 12; ++i) def.vertices.push_back(offset + Vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
+    std::uniform_int_distribution<uint32_t> pick(0, 11);
+    for (int t = 0; t < 8; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
+    build_mesh_tree(def);
     return def;
 }
 
@@ -95,6 +110,45 @@ TEST(ShapeBounds, TightBesideTheRoundSide) {
             EXPECT_GE(shape_lower_bound(shape, cell), exact - 4e-4) << "kind " << int(kind) << " case " << i;
         }
     }
+}
+
+// Random cells around each shape, and for each a cell moved towards the
+// shape until it touches (the exact test's own answer): shape_may_touch
+// must let every touching cell through.
+TEST(ShapeBounds, MayTouchNeverMissesATouchingCell) {
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int touching = 0, pruned = 0;
+    for (ShapeKind kind : {ShapeKind::kBox, ShapeKind::kCylinder, ShapeKind::kCapsule, ShapeKind::kMesh}) {
+        for (int i = 0; i < 4000; ++i) {
+            const ShapeDef def = kind == ShapeKind::kMesh ? random_mesh(rng) : random_def(rng, kind);
+            PlacedShape shape;
+            place_shape(def, random_pose(rng), unit(rng) < 0.3 ? 0.05 * unit(rng) : 0.0, true, shape);
+            const Vec3 half = Vec3::Constant(0.005 + 0.2 * unit(rng));
+            Vec3 center = shape.box.center() + (Vec3(unit(rng), unit(rng), unit(rng)) - Vec3::Constant(0.5)) * 3.0;
+            uint64_t tests = 0;
+            // Halve the way to the shape's centre until the cell touches,
+            // then step back out while it still does: a cell at the limit.
+            Vec3 out = center;
+            for (int step = 0; step < 60 && !shape_touches_cell(shape, center, half, tests); ++step) {
+                out = center;
+                center = 0.5 * (center + shape.box.center());
+            }
+            if (!shape_touches_cell(shape, center, half, tests)) continue;
+            for (int step = 0; step < 50; ++step) {
+                const Vec3 middle = 0.5 * (center + out);
+                (shape_touches_cell(shape, middle, half, tests) ? center : out) = middle;
+            }
+            ++touching;
+            // A picometre inside the limit: at the limit itself rounding
+            // (1e-16 m) decides either way.
+            ASSERT_TRUE(shape_may_touch(shape, Aabb::from_center(center, half + Vec3::Constant(1e-12))))
+                << "kind " << int(kind) << " case " << i << ": a touching cell was pruned";
+            pruned += !shape_may_touch(shape, Aabb::from_center(out + (out - center) * 1e3, half));
+        }
+    }
+    EXPECT_GT(touching, 15000);
+    EXPECT_GT(pruned, 0) << "cells apart from the shape should be pruned sometimes";
 }
 
 }  // namespace
