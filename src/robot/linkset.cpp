@@ -91,9 +91,12 @@ void LinkSet::set_pair_enabled(uint32_t a, uint32_t b, bool enabled) {
 // one they are placed at: a planner moving one arm leaves the base, torso
 // and head where they are, and placing a mesh (every vertex, then its
 // triangle tree) is most of the cost of a new configuration.
-void LinkSet::set_poses(const std::vector<Pose> &poses) {
+void LinkSet::set_poses(const std::vector<Pose> &poses) { set_poses(poses, nullptr, 0); }
+
+void LinkSet::set_poses(const std::vector<Pose> &poses, const uint8_t *moved, size_t known) {
+    if (!topology_from_poses_) known = 0;  // every link is placed below
     for (uint32_t i = 0; i < links_.size(); ++i) {
-        if (topology_from_poses_ && same_pose(links_[i].pose, poses[i])) continue;
+        if (i < known ? moved[i] == 0 : topology_from_poses_ && same_pose(links_[i].pose, poses[i])) continue;
         links_[i].pose = poses[i];
         place_link(i);
     }

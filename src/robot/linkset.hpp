@@ -60,6 +60,11 @@ public:
     void set_link_padding(uint32_t link, double padding);
     void set_link_enabled(uint32_t link, bool enabled);
     void set_poses(const std::vector<Pose> &poses);
+    // The same when the caller knows which of the first `known` links may
+    // have moved since the last set_poses (moved[i] != 0; forward
+    // kinematics' flags): the others are not compared; links from `known`
+    // on are.
+    void set_poses(const std::vector<Pose> &poses, const uint8_t *moved, size_t known);
     // The box meshes get from the next placements on (shape.hpp): a batch's
     // own copy asks for kCheap.  Answers do not depend on it.
     void set_mesh_box(MeshBox mesh_box) { mesh_box_ = mesh_box; }

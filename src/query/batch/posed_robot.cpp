@@ -17,14 +17,22 @@ void PosedRobot::bind(const LinkSet &links, const JointTree &joints) {
     for (size_t i = joints.link_count(); i < links.link_count(); ++i)
         poses_[i] = links.link(static_cast<uint32_t>(i)).pose;
     posed_ = false;
+    copy_holds_previous_ = false;
 }
 
+// FK's flags say which links moved since the poses it started from; the
+// copy may skip the others when it holds those poses.
 const LinkSet &PosedRobot::pose(const double *commanded, const Pose &base) {
-    copy_->set_poses(pose_links(commanded, base));
+    const bool from_copy = copy_holds_previous_ && posed_;
+    pose_links(commanded, base);
+    if (from_copy) copy_->set_poses(poses_, moved_.data(), moved_.size());
+    else copy_->set_poses(poses_);
+    copy_holds_previous_ = true;
     return *copy_;
 }
 
 const std::vector<Pose> &PosedRobot::pose_links(const double *commanded, const Pose &base) {
+    copy_holds_previous_ = false;
     positions_.swap(previous_);
     joints_->positions_from(commanded, positions_.data());
     forward_kinematics(base);

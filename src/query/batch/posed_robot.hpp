@@ -50,6 +50,8 @@ private:
     std::vector<uint8_t> moved_;
     Pose base_;
     bool posed_ = false;  // poses_ hold an FK result of positions_ and base_
+    // The copy's links are at poses_ (the last pose(), no pose_links() since).
+    bool copy_holds_previous_ = false;
 };
 
 }  // namespace octoprox
