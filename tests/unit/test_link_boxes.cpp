@@ -1,7 +1,8 @@
 // The self-collision broad phase's box test in lanes: the AVX2 and the
 // portable loops give, bit for bit, what Aabb::overlaps says, for boxes
 // that overlap, touch on a face or an edge, or miss by one rounding, over
-// more entries than one 64-bit word holds and at every row and start.
+// more entries than one 64-bit word holds and at every row and start;
+// with a word of wanted entries, that test for the wanted ones alone.
 #include "base/avx2.hpp"
 #include "query/self/link_boxes.hpp"
 
@@ -74,6 +75,28 @@ TEST(LinkBoxes, PaddingOverlapsNothing) {
     const BoxRows rows = rows_of(boxes);
     for (size_t row = 0; row < boxes.size(); ++row)
         EXPECT_EQ(overlap_bits(rows, row, 0, 5), expected_bits(boxes, row, 0, 5));
+}
+
+TEST(LinkBoxes, OnlyWantedEntriesAreTested) {
+    std::mt19937_64 random(5);
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        const std::vector<Aabb> boxes = lattice_boxes(90, seed);
+        const BoxRows rows = rows_of(boxes);
+        for (size_t row = 0; row < boxes.size(); ++row) {
+            // Sparse words (whole runs of four unwanted), dense ones, none.
+            const uint64_t a = random(), b = random();
+            for (uint64_t wanted : {a & b & random(), a, uint64_t{0}, kEveryEntry, uint64_t{0xF0F0}}) {
+                for (size_t first = 0; first < boxes.size(); first += 13) {
+                    const size_t count = std::min<size_t>(64, boxes.size() - first);
+                    const uint64_t expected = expected_bits(boxes, row, first, count) & wanted;
+                    EXPECT_EQ(overlap_bits_portable(rows, row, first, count, wanted), expected) << row << " " << first;
+                    if (cpu_has_avx2()) {
+                        EXPECT_EQ(overlap_bits_avx2(rows, row, first, count, wanted), expected) << row << " " << first;
+                    }
+                }
+            }
+        }
+    }
 }
 
 }  // namespace

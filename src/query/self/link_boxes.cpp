@@ -9,9 +9,10 @@
 
 namespace octoprox {
 
-uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count) {
+uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count, uint64_t wanted) {
     uint64_t bits = 0;
     for (size_t k = 0; k < count; ++k) {
+        if (((wanted >> k) & 1) == 0) continue;
         const size_t j = first + k;
         bool overlap = true;
         for (int axis = 0; axis < 3; ++axis)
@@ -21,9 +22,9 @@ uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, si
     return bits;
 }
 
-uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count) {
-    return cpu_has_avx2() ? overlap_bits_avx2(rows, row, first, count)
-                                     : overlap_bits_portable(rows, row, first, count);
+uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count, uint64_t wanted) {
+    return cpu_has_avx2() ? overlap_bits_avx2(rows, row, first, count, wanted)
+                          : overlap_bits_portable(rows, row, first, count, wanted);
 }
 
 // Which bodies have boxes: those of enabled links with shapes.
@@ -48,7 +49,24 @@ void LinkBoxes::lay_out(const LinkSet &links, bool with_attached) {
         rows_.lo[axis].assign(padded, std::numeric_limits<double>::infinity());
         rows_.hi[axis].assign(padded, -std::numeric_limits<double>::infinity());
     }
+    lay_out_enabled(links);
     identity_ = links.identity(), generation_ = links.generation(), with_attached_ = with_attached;
+}
+
+void LinkBoxes::lay_out_enabled(const LinkSet &links) {
+    const BodyPairs filter(links, links.pairs());
+    const size_t n = entries_.size();
+    enabled_.clear();
+    word_start_.assign(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        word_start_[i] = enabled_.size();
+        for (size_t first = i + 1; first < n; first += 64) {
+            uint64_t word = 0;
+            for (size_t k = 0; k < 64 && first + k < n; ++k)
+                if (filter.enabled(entries_[i].body, entries_[first + k].body)) word |= uint64_t{1} << k;
+            enabled_.push_back(word);
+        }
+    }
 }
 
 void LinkBoxes::update(const LinkSet &links, bool with_attached) {

@@ -2,10 +2,12 @@
 // shapes, or an object attached to a link) and, for collision, the pairs
 // of bodies whose boxes overlap: each body's box tested against those of
 // the bodies after it, four at a time (AVX2 where the processor has it),
-// as bits without a branch.  For distance, every pair with the distance
-// of its boxes.  A set of n bodies costs n^2 / 2 box tests in lanes, a
-// few hundred nanoseconds for a PR2's 59, where a sort and sweep pays a
-// sort and a mispredicted branch per pair the sweep meets.
+// as bits without a branch; for the set's own pairs, only the lanes of
+// pairs it enables (the PR2's SRDF disables two pairs in three).  For
+// distance, every pair with the distance of its boxes.  A set of n bodies
+// costs at most n^2 / 2 box tests in lanes, a few hundred nanoseconds for
+// a PR2's 59, where a sort and sweep pays a sort and a mispredicted
+// branch per pair the sweep meets.
 //
 // Bodies are numbered links first (body l is link l), then attached
 // objects (body link_count + i is attached object i).
@@ -54,12 +56,16 @@ struct BoxRows {
     std::vector<double> lo[3], hi[3];
 };
 
-// Bit k set when the box of entry `first + k` (k < count <= 64) overlaps
-// that of entry `row`.  The AVX2 loop (where cpu_has_avx2(), base/avx2.hpp)
-// and the portable one give the same bits.
-uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count);
-uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count);
-uint64_t overlap_bits_avx2(const BoxRows &rows, size_t row, size_t first, size_t count);
+// Bit k set when bit k of `wanted` is and the box of entry `first + k`
+// (k < count <= 64) overlaps that of entry `row`; four entries with no
+// wanted bit cost no test.  The AVX2 loop (where cpu_has_avx2(),
+// base/avx2.hpp) and the portable one give the same bits.
+constexpr uint64_t kEveryEntry = ~uint64_t{0};
+uint64_t overlap_bits(const BoxRows &rows, size_t row, size_t first, size_t count, uint64_t wanted = kEveryEntry);
+uint64_t overlap_bits_portable(const BoxRows &rows, size_t row, size_t first, size_t count,
+                               uint64_t wanted = kEveryEntry);
+uint64_t overlap_bits_avx2(const BoxRows &rows, size_t row, size_t first, size_t count,
+                           uint64_t wanted = kEveryEntry);
 
 class LinkBoxes {
 public:
@@ -74,17 +80,16 @@ public:
     // Pairs come by their first body, then their second, in body order.
     template <class Visit>
     bool overlapping(const BodyPairs &filter, Visit &&visit) const {
-        const size_t n = entries_.size();
-        for (size_t i = 0; i + 1 < n; ++i) {
-            for (size_t first = i + 1; first < n; first += 64) {
-                const size_t count = std::min<size_t>(64, n - first);
-                for (uint64_t bits = overlap_bits(rows_, i, first, count); bits != 0; bits &= bits - 1) {
-                    const Entry &x = entries_[i], &y = entries_[first + static_cast<size_t>(__builtin_ctzll(bits))];
-                    if (filter.enabled(x.body, y.body) && visit(ordered(x, y))) return true;
-                }
-            }
-        }
-        return false;
+        return overlapping_wanted(nullptr, [&](const LinkPair &pair) {
+            return filter.enabled(pair.a, pair.b) && visit(pair);
+        });
+    }
+    // The same for the pairs the set itself enables (BodyPairs of its own
+    // link pairs), which update() laid out as bits: only the boxes of
+    // enabled pairs are tested.
+    template <class Visit>
+    bool overlapping_enabled(Visit &&visit) const {
+        return overlapping_wanted(enabled_.data(), visit);
     }
 
     // Every pair `filter` enables whose boxes are nearer than `cutoff`,
@@ -113,10 +118,32 @@ private:
                                                                         : LinkPair{y.body, x.body};
     }
     void lay_out(const LinkSet &links, bool with_attached);
+    void lay_out_enabled(const LinkSet &links);
+    // Entry i's words of wanted bits for the entries after it, 64 a word,
+    // at enabled_[word_start_[i]]...; null: every entry.
+    template <class Visit>
+    bool overlapping_wanted(const uint64_t *wanted, Visit &&visit) const {
+        const size_t n = entries_.size();
+        for (size_t i = 0; i + 1 < n; ++i) {
+            const uint64_t *words = wanted != nullptr ? wanted + word_start_[i] : nullptr;
+            for (size_t first = i + 1; first < n; first += 64, words += words != nullptr) {
+                const uint64_t want = words != nullptr ? *words : kEveryEntry;
+                if (want == 0) continue;
+                const size_t count = std::min<size_t>(64, n - first);
+                for (uint64_t bits = overlap_bits(rows_, i, first, count, want); bits != 0; bits &= bits - 1) {
+                    const Entry &x = entries_[i], &y = entries_[first + static_cast<size_t>(__builtin_ctzll(bits))];
+                    if (visit(ordered(x, y))) return true;
+                }
+            }
+        }
+        return false;
+    }
 
     std::vector<Entry> entries_;  // by body
     std::vector<Range> ranges_;   // per body
     BoxRows rows_;                // the entries' boxes
+    std::vector<uint64_t> enabled_;    // bits of the pairs the set enables (overlapping_wanted)
+    std::vector<size_t> word_start_;   // per entry, its first word in enabled_
     // The set and state the entries were laid out for; identity 0: none
     // yet (link sets' identities start at 1).
     uint64_t identity_ = 0, generation_ = 0;

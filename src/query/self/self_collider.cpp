@@ -46,8 +46,7 @@ bool SelfCollider::links_touch(const LinkSet &links, const LinkPair &pair, uint6
 bool SelfCollider::collides(const LinkSet &links) {
     boxes_.update(links);
     uint64_t narrow_tests = 0;
-    return boxes_.overlapping(BodyPairs(links, links.pairs()),
-                              [&](const LinkPair &pair) { return links_touch(links, pair, narrow_tests); });
+    return boxes_.overlapping_enabled([&](const LinkPair &pair) { return links_touch(links, pair, narrow_tests); });
 }
 
 // The contact rules of collision against the map (ContactSink): with at
@@ -68,7 +67,7 @@ SelfCollisionOutcome SelfCollider::collide(const LinkSet &links, const SelfColli
         contacts.push_back(contact_of(a, b, settings.penetration, out.narrow_tests));
         return contacts.size() >= settings.max_contacts && settings.max_contacts <= 1;
     };
-    boxes_.overlapping(BodyPairs(links, links.pairs()), [&](const LinkPair &pair) {
+    boxes_.overlapping_enabled([&](const LinkPair &pair) {
         ++out.link_pairs;
         return shape_pairs(links, pair, keep);
     });
