@@ -127,10 +127,12 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
     if (def.kind == ShapeKind::kSphere) return place_sphere(def, link_pose, padding, enabled, out);
     const Eigen::Matrix3d rotation = link_pose.rotation * def.local.rotation;
     const Vec3 center = link_pose.apply(def.local.translation);
+    // A shape placed again rewrites every field its kind reads: only a
+    // slot taking another shape starts from a clean core.
+    if (out.def != &def) out.core = Convex();
     out.def = &def;
     out.kind = def.kind;
     out.inflation = padding;
-    out.core = Convex();
     out.core.center = center;
     out.core.axes = rotation;
     switch (def.kind) {
