@@ -1,6 +1,7 @@
 #include "narrowphase/narrow_phase.hpp"
 
 #include "geometry/gjk.hpp"
+#include "geometry/triangle_box.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +121,18 @@ private:
     const Vec3 mesh_center_, cell_center_, cell_half_, cell_center_in_mesh_, cell_reach_in_mesh_;
 };
 
+// A mesh's triangle against the cell: the separating axes decide all but
+// the pairs within the touch tolerance of the limit or of touching, which
+// GJK decides; the same answers as GJK alone.
+bool triangle_within(const Convex &triangle, double limit, const Vec3 &center, const Vec3 &half) {
+    switch (triangle_box_sat(triangle.v, center, half, limit, kTouchTolerance)) {
+    case TriangleBoxAnswer::kApart: return false;
+    case TriangleBoxAnswer::kIntersecting: return true;
+    case TriangleBoxAnswer::kUndecided: break;
+    }
+    return convex_within(triangle, limit, center, half);
+}
+
 // Depth-first over the mesh's triangle tree in the mesh's own frame, so a
 // collision query never places the mesh (most queries touch a mesh in a few
 // nodes): a node's box, posed, is an oriented box, tested against the cell
@@ -137,7 +150,7 @@ bool mesh_within(const PlacedShape &shape, double limit, const Vec3 &center, con
         if (!test.may_touch(node.box)) continue;
         if (node.is_leaf()) {
             ++narrow_tests;
-            if (convex_within(shape.posed_triangle(node.item), limit, center, half)) return true;
+            if (triangle_within(shape.posed_triangle(node.item), limit, center, half)) return true;
             continue;
         }
         stack[top++] = node.left;
