@@ -1,6 +1,7 @@
 #include "query/direct/direct_collide.hpp"
 
 #include "narrowphase/narrow_phase.hpp"
+#include "octree/cube_entry.hpp"
 
 namespace octoprox {
 
@@ -20,14 +21,33 @@ CollisionOutcome DirectCollider::collide(const SensorOctree &tree, const LinkSet
     model_.threshold = settings.threshold_log_odds;
     model_.pad = obstacle_box_pad(view.resolution());
     if (!links.tree().empty()) {
-        const Cell root = root_cell(view);
-        // An empty map is one unknown cube.
-        if ((root.node != nullptr || !skip_child(root)) &&
-            links.tree().node(links.tree().root()).box.overlaps(root.box))
-            recurse(root, links.tree().root());
+        if (settings.max_contacts == 0 && !settings.unknown_occupied && !settings.cost) {
+            enter_at_cubes(view);
+        } else {
+            const Cell root = root_cell(view);
+            // An empty map is one unknown cube.
+            if ((root.node != nullptr || !skip_child(root)) &&
+                links.tree().node(links.tree().root()).box.overlaps(root.box))
+                recurse(root, links.tree().root());
+        }
     }
     view_ = nullptr, contacts_ = nullptr;
     return outcome_;
+}
+
+// A yes or no with unknown space free: the descent starts at the cubes,
+// about as wide as the robot, that its box overlaps (cube_entry.hpp), found
+// by their keys, instead of bounding the robot against every cube above
+// them (a dozen levels, in each octant the robot spans).  The descent
+// below prunes the same way, so the answer is the same; only the order of
+// the contacts found could differ, and none is kept.
+void DirectCollider::enter_at_cubes(const OctreeView &view) {
+    const int32_t robot_root = links_->tree().root();
+    const Aabb &robot_box = links_->tree().node(robot_root).box;
+    CubeEntries entries;
+    CubeEntryFinder(view).find(robot_box, settings_.threshold_log_odds, model_.inner_boxes, entries);
+    for (int k = 0; k < entries.count && !done_; ++k)
+        if (robot_box.overlaps(bounding_box(entries.cells[k]))) recurse(entries.cells[k], robot_root);
 }
 
 // Algorithm 1: descend the larger of the two nodes (both measured by their

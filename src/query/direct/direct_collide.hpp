@@ -24,6 +24,7 @@ public:
 private:
     using Cell = OctreeCell;
 
+    void enter_at_cubes(const OctreeView &view);
     void recurse(const Cell &cell, int32_t robot_node);
     void descend_octree(const Cell &cell, int32_t robot_node);
     void test_leaf_pair(const Cell &cell, int32_t robot_node);
