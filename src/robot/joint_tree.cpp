@@ -149,9 +149,28 @@ void JointTree::link_poses(const Pose &base, const double *positions, Pose *pose
 
 void JointTree::update_link_poses(const Pose &base, bool base_moved, const double *positions,
                                   const double *previous, Pose *poses, uint8_t *moved) const {
+    update_link_poses(base, base_moved, positions, previous, poses, moved, order_);
+}
+
+std::vector<uint32_t> JointTree::order_toward(const std::vector<uint8_t> &needed) const {
+    // Children come after their parents in order_: walked backwards, a
+    // link is needed once any link below it is.
+    std::vector<uint8_t> below(link_count_, 0);
+    for (size_t i = 0; i < link_count_ && i < needed.size(); ++i) below[i] = needed[i];
+    for (auto j = order_.rbegin(); j != order_.rend(); ++j)
+        if (below[joints_[*j].child_link]) below[joints_[*j].parent_link] = 1;
+    std::vector<uint32_t> order;
+    for (uint32_t j : order_)
+        if (below[joints_[j].child_link]) order.push_back(j);
+    return order;
+}
+
+void JointTree::update_link_poses(const Pose &base, bool base_moved, const double *positions,
+                                  const double *previous, Pose *poses, uint8_t *moved,
+                                  const std::vector<uint32_t> &order) const {
     moved[root_link_] = base_moved ? 1 : 0;
     if (base_moved) poses[root_link_] = base;
-    for (uint32_t j : order_) {
+    for (uint32_t j : order) {
         const Joint &joint = joints_[j];
         // Bit for bit: -0.0 and 0.0 may give poses differing in a zero's sign.
         const bool changed = moved[joint.parent_link] != 0 || std::memcmp(&positions[j], &previous[j], sizeof(double)) != 0;

@@ -81,6 +81,14 @@ public:
     // links moved.
     void update_link_poses(const Pose &base, bool base_moved, const double *positions, const double *previous,
                            Pose *poses, uint8_t *moved) const;
+    // The FK order (parents first) cut to the joints that lead to a link
+    // flagged in `needed` (per link): the others only pose links no one
+    // reads (a robot's sensor frames, links without shapes below them).
+    std::vector<uint32_t> order_toward(const std::vector<uint8_t> &needed) const;
+    // update_link_poses along such an order: the links it leaves out keep
+    // their poses and moved flags.
+    void update_link_poses(const Pose &base, bool base_moved, const double *positions, const double *previous,
+                           Pose *poses, uint8_t *moved, const std::vector<uint32_t> &order) const;
 
 private:
     // child = parent * origin * motion(q)

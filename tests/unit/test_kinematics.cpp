@@ -1,9 +1,12 @@
 // Forward kinematics inside the library: once a URDF link set is built and
 // posed, new joint positions allocate nothing (joint tree, link placement,
-// mesh and link BVH refits), and FK answers a simple chain exactly.  With
-// the shared data, the PR2's FK rate is printed (reported, not asserted).
+// mesh and link BVH refits), and FK answers a simple chain exactly.  FK cut
+// to the joints toward some links poses those links as the whole FK does.
+// With the shared data, the PR2's FK rate is printed (reported, not
+// asserted).
 #include "alloc_counter.hpp"
 
+#include "robot/joint_tree.hpp"
 #include "robot/urdf_model.hpp"
 
 #include <gtest/gtest.h>
@@ -62,6 +65,45 @@ TEST(Kinematics, NewPositionsAllocateNothing) {
     EXPECT_NEAR(lower.x(), (0.5 + s) * std::cos(a), 1e-12);
     EXPECT_NEAR(lower.y(), (0.5 + s) * std::sin(a), 1e-12);
     EXPECT_NEAR(lower.z(), 0.1, 1e-12);
+}
+
+// base -> a (shapeless) -> b, base -> c (shapeless leaf), a -> d (leaf):
+// toward b, FK keeps the joints to a and b alone, and poses them bit for
+// bit as the whole FK does, leaving c and d as they were.
+TEST(Kinematics, OrderTowardNeededLinks) {
+    auto joint = [](const char *name, uint32_t parent, uint32_t child, JointType type) {
+        Joint j;
+        j.name = name, j.type = type, j.parent_link = parent, j.child_link = child;
+        j.origin.translation = Vec3(0.1 * child, 0.2, 0.05 * parent);
+        j.origin.rotation = Eigen::AngleAxisd(0.3 * child, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+        j.axis = Vec3(0, 0, 1);
+        return j;
+    };
+    JointTree tree;
+    tree.build({joint("to_a", 0, 1, JointType::kRevolute), joint("to_b", 1, 2, JointType::kContinuous),
+                joint("to_c", 0, 3, JointType::kRevolute), joint("to_d", 1, 4, JointType::kFixed)},
+               5, 0, "test");
+    const std::vector<uint32_t> order = tree.order_toward({0, 0, 1, 0, 0});
+    ASSERT_EQ(order.size(), 2u);
+    EXPECT_EQ(tree.joint(order[0]).name, "to_a");
+    EXPECT_EQ(tree.joint(order[1]).name, "to_b");
+
+    const double first[4] = {0.1, 0.2, 0.3, 0.0}, next[4] = {-0.7, 1.1, 2.0, 0.0};
+    std::vector<Pose> whole(5), cut(5);
+    tree.link_poses(Pose(), first, whole.data());
+    tree.link_poses(Pose(), first, cut.data());
+    const std::vector<Pose> before = cut;
+    uint8_t moved[5] = {};
+    tree.link_poses(Pose(), next, whole.data());
+    tree.update_link_poses(Pose(), false, next, first, cut.data(), moved, order);
+    for (uint32_t link : {1u, 2u}) {
+        EXPECT_TRUE(cut[link].rotation == whole[link].rotation && cut[link].translation == whole[link].translation);
+        EXPECT_EQ(moved[link], 1) << link;
+    }
+    for (uint32_t link : {3u, 4u}) {
+        EXPECT_TRUE(cut[link].rotation == before[link].rotation && cut[link].translation == before[link].translation);
+        EXPECT_EQ(moved[link], 0) << link;
+    }
 }
 
 // Reported, not asserted: the rate of FK plus link placement on the PR2.

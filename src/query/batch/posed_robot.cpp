@@ -3,11 +3,20 @@
 namespace octoprox {
 
 void PosedRobot::bind(const LinkSet &links, const JointTree &joints) {
-    if (!copy_ || source_ != links.identity() || copy_->generation() != links.generation()) {
+    const bool copied = !copy_ || source_ != links.identity() || copy_->generation() != links.generation();
+    if (copied) {
         copy_ = std::make_unique<LinkSet>(links);
         // Each pose of the copy is checked once: cheap mesh boxes pay.
         copy_->set_mesh_box(MeshBox::kCheap);
         source_ = links.identity();
+    }
+    if (copied || joints_ != &joints) {
+        // FK poses only the links that have shapes (own or attached) or
+        // lead to one: the copy's other links are never read.
+        std::vector<uint8_t> shaped(joints.link_count(), 0);
+        for (const PlacedShape &shape : copy_->placed())
+            if (shape.link < shaped.size()) shaped[shape.link] = 1;
+        fk_order_ = joints.order_toward(shaped);
     }
     joints_ = &joints;
     positions_.resize(joints.joint_count());
@@ -46,7 +55,7 @@ void PosedRobot::forward_kinematics(const Pose &base) {
     } else {
         const bool base_moved = !(base.rotation == base_.rotation && base.translation == base_.translation);
         joints_->update_link_poses(base, base_moved, positions_.data(), previous_.data(), poses_.data(),
-                                   moved_.data());
+                                   moved_.data(), fk_order_);
     }
     base_ = base;
 }

@@ -23,14 +23,16 @@ public:
     // FK at `commanded` (joint_count() values, model order) with the root
     // link at `base` (map frame); the copy's links take the poses.
     const LinkSet &pose(const double *commanded, const Pose &base);
-    // FK alone: the link poses at `commanded` (link order), the copy's
-    // shapes left where they were.  A later pose() places what moved.
+    // FK alone: the link poses at `commanded` (link order; those of links
+    // with no shape at or below them may be stale), the copy's shapes left
+    // where they were.  A later pose() places what moved.
     const std::vector<Pose> &pose_links(const double *commanded, const Pose &base);
 
     // Every joint's position FK uses for `commanded` (mimic joints
     // resolved; fixed, floating and planar joints 0).
     void positions(const double *commanded, std::vector<double> &out) const;
-    // The copy's link poses after the last pose(), link order.
+    // The copy's link poses after the last pose(), link order; a link
+    // with no shape at or below it keeps a pose of an earlier one.
     const std::vector<Pose> &link_poses() const { return poses_; }
 
     size_t joint_count() const { return joints_->joint_count(); }
@@ -48,6 +50,7 @@ private:
     std::vector<double> positions_, previous_;
     std::vector<Pose> poses_;
     std::vector<uint8_t> moved_;
+    std::vector<uint32_t> fk_order_;  // the joints FK updates after the first pose
     Pose base_;
     bool posed_ = false;  // poses_ hold an FK result of positions_ and base_
     // The copy's links are at poses_ (the last pose(), no pose_links() since).
