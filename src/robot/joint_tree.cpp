@@ -2,6 +2,7 @@
 
 #include "base/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -114,8 +115,12 @@ void JointTree::set_commanded(const double *values) {
 
 void JointTree::find_active_joints() {
     active_.clear();
-    for (uint32_t j = 0; j < joints_.size(); ++j)
-        if (joints_[j].moves() && joints_[j].mimic == kNoIndex) active_.push_back(j);
+    moving_.clear();
+    for (uint32_t j = 0; j < joints_.size(); ++j) {
+        if (!joints_[j].moves()) continue;
+        if (joints_[j].mimic == kNoIndex) active_.push_back(j);
+        moving_.push_back({j, master_[j], joints_[master_[j]].moves(), multiplier_[j], offset_[j]});
+    }
 }
 
 // The other joints' commanded values are never read: positions_from takes
@@ -128,10 +133,10 @@ void JointTree::set_active_commanded(const double *values) {
 void JointTree::update_positions() { positions_from(commanded_.data(), positions_.data()); }
 
 void JointTree::positions_from(const double *commanded, double *positions) const {
-    for (size_t j = 0; j < joints_.size(); ++j) {
-        const uint32_t master = master_[j];
-        const double master_value = joints_[master].moves() ? commanded[master] : 0.0;
-        positions[j] = joints_[j].moves() ? multiplier_[j] * master_value + offset_[j] : 0.0;
+    std::fill(positions, positions + joints_.size(), 0.0);
+    for (const MovingJoint &m : moving_) {
+        const double master_value = m.master_moves ? commanded[m.master] : 0.0;
+        positions[m.joint] = m.multiplier * master_value + m.offset;
     }
 }
 

@@ -107,6 +107,14 @@ private:
     std::vector<double> multiplier_, offset_;  // composed along mimic chains
     std::vector<double> commanded_, positions_;
     std::vector<uint32_t> active_;     // model indices of the active joints
+    // The joints that move, with where their position comes from, apart
+    // from the Joint records: positions_from reads only these.
+    struct MovingJoint {
+        uint32_t joint, master;
+        bool master_moves;
+        double multiplier, offset;
+    };
+    std::vector<MovingJoint> moving_;
     // Per joint, what compose() may skip: an origin without rotation, and
     // an axis along x, y or z (0, 1, 2; -1: another), with its sign: most
     // URDF joints turn about a frame axis, a rotation of two columns.
