@@ -152,11 +152,6 @@ void JointTree::link_poses(const Pose &base, const double *positions, Pose *pose
     }
 }
 
-void JointTree::update_link_poses(const Pose &base, bool base_moved, const double *positions,
-                                  const double *previous, Pose *poses, uint8_t *moved) const {
-    update_link_poses(base, base_moved, positions, previous, poses, moved, order_);
-}
-
 std::vector<uint32_t> JointTree::order_toward(const std::vector<uint8_t> &needed) const {
     // Children come after their parents in order_: walked backwards, a
     // link is needed once any link below it is.

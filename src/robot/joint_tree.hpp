@@ -73,20 +73,17 @@ public:
     // `positions` hold joint_count() values, `poses` link_count().
     void positions_from(const double *commanded, double *positions) const;
     void link_poses(const Pose &base, const double *positions, Pose *poses) const;
-    // FK again after a change from `previous` positions (and, when
-    // base_moved, a new base): only the links below a joint whose position
-    // changed, or below a link that moved, are recomputed; `poses` holds
-    // the poses at `previous` and gets the new ones, bit for bit as
-    // link_poses computes them.  `moved` (link_count() flags) tells which
-    // links moved.
-    void update_link_poses(const Pose &base, bool base_moved, const double *positions, const double *previous,
-                           Pose *poses, uint8_t *moved) const;
     // The FK order (parents first) cut to the joints that lead to a link
     // flagged in `needed` (per link): the others only pose links no one
     // reads (a robot's sensor frames, links without shapes below them).
     std::vector<uint32_t> order_toward(const std::vector<uint8_t> &needed) const;
-    // update_link_poses along such an order: the links it leaves out keep
-    // their poses and moved flags.
+    // FK again along such an order after a change from `previous`
+    // positions (and, when base_moved, a new base): only the links below a
+    // joint whose position changed, or below a link that moved, are
+    // recomputed; `poses` holds the poses at `previous` and gets the new
+    // ones, bit for bit as link_poses computes them.  `moved` (link_count()
+    // flags) tells which links moved; the links the order leaves out keep
+    // their poses and flags.
     void update_link_poses(const Pose &base, bool base_moved, const double *positions, const double *previous,
                            Pose *poses, uint8_t *moved, const std::vector<uint32_t> &order) const;
 
