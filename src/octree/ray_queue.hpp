@@ -118,7 +118,7 @@ private:
 };
 
 // Walks the queue's rays four at a time with AVX2; only where
-// four_lanes_available() (ray_walk.hpp) says so.
+// cpu_has_avx2() (base/avx2.hpp) says so.
 void walk_four(RayQueue &queue, FrameMarks &marks);
 
 }  // namespace octoprox

@@ -37,7 +37,7 @@ RayOrigin ray_origin(const BoundedOcTree &tree, const octomap::OcTreeKey &origin
 RaySetup ray_setup(const RayOrigin &origin, const octomap::point3d &end);
 
 // The same for four rays at once with AVX2 (ray_setup_avx2.cpp), only
-// where four_lanes_available() (ray_walk.hpp) says so.
+// where cpu_has_avx2() (base/avx2.hpp) says so.
 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetup out[4]);
 
 // How one step along an axis moves the mark's bit: x + 8 y + 64 z inside

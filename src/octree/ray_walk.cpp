@@ -1,5 +1,6 @@
 #include "octree/ray_walk.hpp"
 
+#include "base/avx2.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/face_pair.hpp"
 #include "octree/ray_queue.hpp"
@@ -51,7 +52,7 @@ void RayWalker::walk(const std::vector<octomap::point3d> &ends, const std::vecto
                      size_t begin, size_t end, FrameMarks &marks, std::vector<uint32_t> &strays,
                      RayLanes lanes) const {
     RayQueue queue(origin_, origin_key_, ends, end_keys, begin, end, marks, strays);
-    const bool four = lanes != RayLanes::kTwo && four_lanes_available();
+    const bool four = lanes != RayLanes::kTwo && cpu_has_avx2();
     if (four) walk_four(queue, marks);
     else walk_two(queue, marks);
 }

@@ -17,12 +17,10 @@ namespace octoprox {
 
 class BoundedOcTree;
 
-// How many rays a walk steps at once: four needs AVX2 (four_lanes_available)
-// and falls back to two without it; the best is four where the processor
-// has it.  Every choice marks the same cells.
+// How many rays a walk steps at once: four needs AVX2 (cpu_has_avx2,
+// base/avx2.hpp) and falls back to two without it; the best is four where
+// the processor has it.  Every choice marks the same cells.
 enum class RayLanes { kBest, kTwo, kFour };
-
-bool four_lanes_available();
 
 class RayWalker {
 public:

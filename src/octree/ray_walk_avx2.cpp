@@ -15,8 +15,6 @@
 
 namespace octoprox {
 
-bool four_lanes_available() { return cpu_has_avx2(); }
-
 #if defined(OPX_AVX2_LANES)
 
 namespace {

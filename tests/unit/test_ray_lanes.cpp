@@ -3,6 +3,7 @@
 // ray_setup does, on random rays and on rays through cell faces, edges and
 // corners, along the axes and the diagonals.  The cells themselves are
 // compared with OctoMap end to end by the ingest tests.
+#include "base/avx2.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/frame_marks.hpp"
 #include "octree/ray_setup.hpp"
@@ -99,7 +100,7 @@ void expect_same_setups(const BoundedOcTree &tree, const Rays &rays) {
 }
 
 void expect_same_lanes(const BoundedOcTree &tree, const Rays &rays) {
-    if (!octoprox::four_lanes_available()) GTEST_SKIP() << "this processor has no AVX2: only two lanes run";
+    if (!octoprox::cpu_has_avx2()) GTEST_SKIP() << "this processor has no AVX2: only two lanes run";
     expect_same_setups(tree, rays);
     EXPECT_EQ(walked_words(tree, rays, RayLanes::kTwo), walked_words(tree, rays, RayLanes::kFour));
 }
