@@ -95,6 +95,19 @@ double round_shape_gap(const Vec3 &center, const Eigen::Matrix3d &axes, double r
     return std::sqrt(side * side + along * along);
 }
 
+// The root box of a mesh's triangle tree (its box in the mesh's frame)
+// posed: an oriented box on the shape's axes, far tighter than the
+// map-frame box when the mesh is turned.  False for a mesh without
+// triangles (loaders and the scene parser reject those).
+inline bool posed_mesh_box(const PlacedShape &shape, Vec3 &center, Vec3 &half) {
+    const AabbTree &tree = shape.def->mesh_tree;
+    if (tree.empty()) return false;
+    const Aabb &root = tree.node(tree.root()).box;
+    center = shape.core.axes * root.center() + shape.core.center;
+    half = root.half_extent();
+    return true;
+}
+
 // A cell grown by the limit against the posed boxes of a mesh's triangle
 // tree (boxes in the mesh's own frame), on the face axes of both, as
 // oriented_box_may_touch: the mesh's axes first, in the mesh's frame,
@@ -175,14 +188,13 @@ double shape_lower_bound(const PlacedShape &shape, const Aabb &box) {
         return round_shape_gap(core.center, core.axes, 0.0, half_length, false, box) - shape.inflation;
     }
     case ShapeKind::kMesh: {
-        // The root box of the mesh's tree, in the mesh frame: an oriented
-        // box in the map, far tighter than the map-frame box when rotated.
-        const Aabb &local = shape.def->mesh_tree.node(shape.def->mesh_tree.root()).box;
-        return oriented_box_gap(core.axes * local.center() + core.center, core.axes, local.half_extent(), box) -
-               shape.inflation;
+        Vec3 center, half;
+        if (!posed_mesh_box(shape, center, half)) break;
+        return oriented_box_gap(center, core.axes, half, box) - shape.inflation;
     }
-    default: return std::sqrt(shape.box.squared_distance(box));
+    default: break;
     }
+    return std::sqrt(shape.box.squared_distance(box));
 }
 
 bool shape_may_touch(const PlacedShape &shape, const Aabb &box) {
@@ -202,12 +214,9 @@ bool shape_may_touch(const PlacedShape &shape, const Aabb &box) {
         return oriented_box_may_touch(core.center, core.axes, Vec3(inflation, inflation, half_length + inflation), box);
     }
     case ShapeKind::kMesh: {
-        // The box of the mesh's triangle tree, in the mesh's frame, posed.
-        const AabbTree &tree = shape.def->mesh_tree;
-        if (tree.empty()) return true;
-        const Aabb &root = tree.node(tree.root()).box;
-        return oriented_box_may_touch(core.center + core.axes * root.center(), core.axes,
-                                      root.half_extent() + Vec3::Constant(inflation), box);
+        Vec3 center, half;
+        if (!posed_mesh_box(shape, center, half)) return true;
+        return oriented_box_may_touch(center, core.axes, half + Vec3::Constant(inflation), box);
     }
     default: return true;
     }
