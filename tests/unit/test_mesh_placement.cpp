@@ -8,6 +8,7 @@
 // read the same vertices.
 #include "robot/linkset.hpp"
 #include "robot/mesh_bounds.hpp"
+#include "unit_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,18 +20,6 @@
 namespace {
 
 using namespace octoprox;
-
-// A random triangle soup of `triangles` triangles over `vertices` points.
-ShapeDef random_mesh(std::mt19937_64 &rng, int vertices, int triangles) {
-    std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
-    ShapeDef def;
-    def.kind = ShapeKind::kMesh;
-    for (int i = 0; i < vertices; ++i) def.vertices.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    std::uniform_int_distribution<uint32_t> pick(0, static_cast<uint32_t>(vertices - 1));
-    for (int t = 0; t < triangles; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
-    build_mesh_tree(def);
-    return def;
-}
 
 Pose random_pose(std::mt19937_64 &rng) {
     std::normal_distribution<double> normal;
@@ -63,7 +52,7 @@ Aabb placed_vertex_box(const ShapeDef &def, const Pose &pose) {
 struct MeshLink {
     LinkSet links;
     explicit MeshLink(ShapeDef def) { links.add_shape(links.add_link("mesh"), std::move(def)); }
-    explicit MeshLink(std::mt19937_64 &rng) : MeshLink(random_mesh(rng, 400, 700)) {}
+    explicit MeshLink(std::mt19937_64 &rng) : MeshLink(unit::random_mesh(rng, 400, 700)) {}
     const PlacedShape &shape() const { return links.placed()[0]; }
     bool placed() const { return shape().mesh_placement.done.load(); }
 };
@@ -75,7 +64,7 @@ bool holds(const Aabb &outer, const Aabb &inner) {
 TEST(MeshPlacement, BoxHoldsThePlacedMeshAndTheExactBoxIsItsBox) {
     std::mt19937_64 rng(7);
     for (int trial = 0; trial < 200; ++trial) {
-        MeshLink mesh(random_mesh(rng, 3 + trial * 5, 1 + trial * 7));
+        MeshLink mesh(unit::random_mesh(rng, 3 + trial * 5, 1 + trial * 7));
         const Pose pose = random_pose(rng);
         mesh.links.set_poses({pose});
         EXPECT_TRUE(holds(mesh.shape().box, placed_box(*mesh.shape().def, pose))) << "trial " << trial;
@@ -133,7 +122,7 @@ TEST(MeshPlacement, CheapBoxHoldsThePlacedMesh) {
     int cheap = 0;
     for (int trial = 0; trial < 200; ++trial) {
         MeshLink mesh(trial % 4 == 0 ? box_mesh(Vec3(0.1, 0.3, 0.05) * (1 + trial % 7))
-                                     : random_mesh(rng, 3 + trial * 5, 1 + trial * 7));
+                                     : unit::random_mesh(rng, 3 + trial * 5, 1 + trial * 7));
         mesh.links.set_mesh_box(MeshBox::kCheap);
         const Pose pose = random_pose(rng);
         mesh.links.set_poses({pose});

@@ -8,6 +8,7 @@
 // cells a picometre inside the touch limit.
 #include "narrowphase/narrow_phase.hpp"
 #include "narrowphase/shape_distance.hpp"
+#include "unit_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,13 +44,7 @@ ShapeDef random_def(std::mt19937_64 &rng, ShapeKind kind) {
 ShapeDef random_mesh(std::mt19937_64 &rng) {
     std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
     const Vec3 offset(coordinate(rng), coordinate(rng), coordinate(rng));
-    ShapeDef def;
-    def.kind = ShapeKind::kMesh;
-    for (int i = 0; i < 12; ++i) def.vertices.push_back(offset + Vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
-    std::uniform_int_distribution<uint32_t> pick(0, 11);
-    for (int t = 0; t < 8; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
-    build_mesh_tree(def);
-    return def;
+    return unit::random_mesh(rng, 12, 8, offset);
 }
 
 double exact_distance(const PlacedShape &shape, const Aabb &cell) {

@@ -12,6 +12,18 @@
 
 namespace unit {
 
+octoprox::ShapeDef random_mesh(std::mt19937_64 &rng, int vertices, int triangles, const octoprox::Vec3 &offset) {
+    std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
+    octoprox::ShapeDef def;
+    def.kind = octoprox::ShapeKind::kMesh;
+    for (int i = 0; i < vertices; ++i)
+        def.vertices.push_back(offset + octoprox::Vec3(coordinate(rng), coordinate(rng), coordinate(rng)));
+    std::uniform_int_distribution<uint32_t> pick(0, static_cast<uint32_t>(vertices - 1));
+    for (int t = 0; t < triangles; ++t) def.triangles.push_back({pick(rng), pick(rng), pick(rng)});
+    octoprox::build_mesh_tree(def);
+    return def;
+}
+
 using octoprox::Aabb;
 using octoprox::Vec3;
 

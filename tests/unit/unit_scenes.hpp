@@ -3,6 +3,7 @@
 #pragma once
 
 #include "octree/cell_boxes.hpp"
+#include "robot/shape.hpp"
 #include "octree/sensor_octree.hpp"
 
 #include <cstdint>
@@ -20,6 +21,11 @@ bool file_exists(const std::string &path);
 // n boxes with centres uniform in [-extent, extent]^3 and edges in
 // (0, max_edge].
 std::vector<octoprox::Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt19937_64 &rng);
+
+// A random triangle soup: `vertices` points uniform in [-0.3, 0.3]^3
+// moved by `offset`, `triangles` triangles over them, its tree built.
+octoprox::ShapeDef random_mesh(std::mt19937_64 &rng, int vertices, int triangles,
+                               const octoprox::Vec3 &offset = octoprox::Vec3::Zero());
 
 // An empty octree of `resolution` metres, default parameters otherwise.
 std::unique_ptr<octoprox::SensorOctree> empty_octree(double resolution);
