@@ -82,4 +82,24 @@ Frame tie_frame(double resolution, int variant) {
     return frame;
 }
 
+Frame dense_frame(double resolution, int variant) {
+    const float r = static_cast<float>(resolution);
+    Frame frame;
+    const octomap::point3d origins[4] = {octomap::point3d(0.0f, 0.0f, 0.0f), octomap::point3d(0.5f * r, 0.0f, 0.0f),
+                                         octomap::point3d(0.5f * r, 0.5f * r, 0.5f * r),
+                                         octomap::point3d(0.3f * r, -0.7f * r, 0.1f * r)};
+    frame.origin = origins[variant % 4];
+    // Row after row, a quarter cell apart: every run of a row in a cell
+    // has points on the cell's faces, edges and corners.
+    const float step = 0.25f * r;
+    for (int row = -48; row <= 48; ++row)
+        for (int column = -48; column <= 48; ++column) {
+            const float x = column * step, y = row * step;
+            frame.points.emplace_back(x, y, 9.0f * r);                        // a wall on cell faces
+            frame.points.emplace_back(x, y, 6.0f * r + 0.5f * x - 0.25f * y);  // a slanted one
+            frame.points.emplace_back(-7.0f * r, y, x);                       // one across x
+        }
+    return frame;
+}
+
 }  // namespace ingest

@@ -25,5 +25,9 @@ Frame room_frame(const octomap::point3d &origin, float yaw);
 // Ties: an origin on a cell corner, on a face and at a centre, points on
 // cell faces, edges and corners, rays along the axes and the diagonals.
 Frame tie_frame(double resolution, int variant);
+// Dense rows of points a quarter cell apart on planes, as a depth camera
+// gives them: many rays ending in each cell, on its faces, edges and
+// corners, one after another.
+Frame dense_frame(double resolution, int variant);
 
 }  // namespace ingest

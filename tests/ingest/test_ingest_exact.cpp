@@ -5,7 +5,8 @@
 // same leaves (the same pruning), and the insert report must count the
 // cells OctoMap's computeUpdate finds.  The scenes: random clouds with far
 // points and points outside the map, a room seen by a depth camera, ties
-// (cell faces, edges, corners, rays along the axes and diagonals), several
+// (cell faces, edges, corners, rays along the axes and diagonals), dense
+// rows of points on planes (many rays a cell), several
 // frames into one map until it clamps and prunes, cut rays (max range),
 // maps loaded from .bt and .ot, and every thread count.
 #include "ingest_scenes.hpp"
@@ -130,6 +131,17 @@ void test_ties(void **) {
     }
 }
 
+void test_dense_rows(void **) {
+    for (const double resolution : {0.1, 0.05}) {
+        opx_octree *ours = new_map(resolution);
+        octomap::OcTree theirs(resolution);
+        for (int variant = 0; variant < 4; ++variant)
+            insert_both(ours, theirs, ingest::dense_frame(resolution, variant), variant == 3 ? 8.5 * resolution : -1.0,
+                        1 + variant % 2, "dense rows " + std::to_string(resolution) + " variant " + std::to_string(variant));
+        opx_octree_destroy(ours);
+    }
+}
+
 void test_room(void **) {
     for (const double resolution : {0.1, 0.05}) {
         opx_octree *ours = new_map(resolution);
@@ -222,7 +234,8 @@ void test_thread_counts(void **) {
 int main() {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_frames), cmocka_unit_test(test_clamped_and_pruned),
-        cmocka_unit_test(test_ties),          cmocka_unit_test(test_room),
+        cmocka_unit_test(test_ties),          cmocka_unit_test(test_dense_rows),
+        cmocka_unit_test(test_room),
         cmocka_unit_test(test_loaded_bt),     cmocka_unit_test(test_loaded_ot),
         cmocka_unit_test(test_thread_counts), cmocka_unit_test(test_map_edge),
         cmocka_unit_test(test_far_points),
