@@ -57,13 +57,23 @@ Frame room_frame(const octomap::point3d &origin, float yaw) {
     return frame;
 }
 
+namespace {
+
+// An origin where ties are likeliest: a cell corner, a face, a centre
+// (which 0, 1, 2), or off the grid (3); r is the resolution.
+octomap::point3d tie_origin(float r, int which) {
+    const octomap::point3d origins[4] = {octomap::point3d(0.0f, 0.0f, 0.0f), octomap::point3d(0.5f * r, 0.0f, 0.0f),
+                                         octomap::point3d(0.5f * r, 0.5f * r, 0.5f * r),
+                                         octomap::point3d(0.3f * r, -0.7f * r, 0.1f * r)};
+    return origins[which];
+}
+
+}  // namespace
+
 Frame tie_frame(double resolution, int variant) {
     const float r = static_cast<float>(resolution);
     Frame frame;
-    const octomap::point3d origins[3] = {octomap::point3d(0.0f, 0.0f, 0.0f),          // a cell corner
-                                         octomap::point3d(0.5f * r, 0.0f, 0.0f),      // a face
-                                         octomap::point3d(0.5f * r, 0.5f * r, 0.5f * r)};  // a centre
-    frame.origin = origins[variant % 3];
+    frame.origin = tie_origin(r, variant % 3);
     for (int i = -12; i <= 12; ++i)
         for (int j = -12; j <= 12; ++j) {
             const float a = i * r, b = j * r;
@@ -85,12 +95,10 @@ Frame tie_frame(double resolution, int variant) {
 Frame dense_frame(double resolution, int variant) {
     const float r = static_cast<float>(resolution);
     Frame frame;
-    const octomap::point3d origins[4] = {octomap::point3d(0.0f, 0.0f, 0.0f), octomap::point3d(0.5f * r, 0.0f, 0.0f),
-                                         octomap::point3d(0.5f * r, 0.5f * r, 0.5f * r),
-                                         octomap::point3d(0.3f * r, -0.7f * r, 0.1f * r)};
-    frame.origin = origins[variant % 4];
-    // Row after row, a quarter cell apart: every run of a row in a cell
-    // has points on the cell's faces, edges and corners.
+    frame.origin = tie_origin(r, variant % 4);
+    // Row after row, a quarter cell apart: every fourth point of a row and
+    // every fourth row lie on cell faces, so the cells hold points on their
+    // faces, edges and corners.
     const float step = 0.25f * r;
     for (int row = -48; row <= 48; ++row)
         for (int column = -48; column <= 48; ++column) {

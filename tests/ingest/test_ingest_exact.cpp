@@ -135,9 +135,12 @@ void test_dense_rows(void **) {
     for (const double resolution : {0.1, 0.05}) {
         opx_octree *ours = new_map(resolution);
         octomap::OcTree theirs(resolution);
-        for (int variant = 0; variant < 4; ++variant)
-            insert_both(ours, theirs, ingest::dense_frame(resolution, variant), variant == 3 ? 8.5 * resolution : -1.0,
-                        1 + variant % 2, "dense rows " + std::to_string(resolution) + " variant " + std::to_string(variant));
+        for (int variant = 0; variant < 4; ++variant) {
+            const double max_range = variant == 3 ? 8.5 * resolution : -1.0;
+            const std::string label =
+                "dense rows " + std::to_string(resolution) + " variant " + std::to_string(variant);
+            insert_both(ours, theirs, ingest::dense_frame(resolution, variant), max_range, 1 + variant % 2, label);
+        }
         opx_octree_destroy(ours);
     }
 }

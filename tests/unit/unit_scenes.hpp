@@ -3,8 +3,8 @@
 #pragma once
 
 #include "octree/cell_boxes.hpp"
-#include "robot/shape.hpp"
 #include "octree/sensor_octree.hpp"
+#include "robot/shape.hpp"
 
 #include <cstdint>
 #include <memory>
