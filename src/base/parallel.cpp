@@ -1,5 +1,7 @@
 #include "base/parallel.hpp"
 
+#include "base/task_pool.hpp"
+
 #include <algorithm>
 #include <exception>
 #include <thread>
@@ -16,22 +18,7 @@ void run_tasks(size_t count, const std::function<void(size_t)> &task) {
             errors[i] = std::current_exception();
         }
     };
-    // Reserved before any thread starts, so that nothing below allocates
-    // while one runs (but a thread's own start).
-    std::vector<std::thread> threads;
-    std::vector<size_t> inline_tasks;
-    threads.reserve(count);
-    inline_tasks.reserve(count);
-    for (size_t i = 1; i < count; ++i) {
-        try {
-            threads.emplace_back(run, i);
-        } catch (const std::exception &) {  // no thread, or no memory for one
-            inline_tasks.push_back(i);  // reserved above: cannot throw
-        }
-    }
-    run(0);
-    for (const size_t i : inline_tasks) run(i);
-    for (std::thread &t : threads) t.join();
+    run_on_pool(count, run);
     for (const std::exception_ptr &error : errors)
         if (error) std::rethrow_exception(error);
 }

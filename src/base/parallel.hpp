@@ -1,4 +1,5 @@
-// Running a few tasks on the caller's thread and threads of their own.
+// Running a few tasks on the caller's thread and the library's pool of
+// threads (base/task_pool.hpp).
 #pragma once
 
 #include <cstddef>
@@ -7,8 +8,8 @@
 namespace octoprox {
 
 // Runs task(0) .. task(count - 1): task 0 on the caller's thread, every
-// other on a thread started for it.  A thread that cannot be started (no
-// resources, no memory) has its task run on the caller's thread instead,
+// other on a pool thread.  A task no thread can be had for (none idle, and
+// none can be started: no resources, no memory) runs on the caller's thread,
 // so the work is done either way.  Returns when all are done; the first
 // exception a task threw (by index) is then rethrown.
 void run_tasks(size_t count, const std::function<void(size_t)> &task);
