@@ -38,9 +38,11 @@
  *
  * Threads: max_threads workers split the configurations (or motions); 1
  * (the default) runs on the caller's thread, 0 takes one per hardware
- * thread.  The call starts its threads each time (some tens of
- * microseconds): worth it from a few dozen configurations of a large
- * robot, or a few hundred of a small one.  Each worker has its own engine and scratch memory, kept in the
+ * thread.  The threads come from a pool the library keeps between calls
+ * (started by the first call that needs them; a thread left without work
+ * checks for more for 50 microseconds, then sleeps), so handing work to
+ * them costs microseconds: two threads pay from about four configurations
+ * of the PR2 a call.  Each worker has its own engine and scratch memory, kept in the
  * opx_query between calls (with OPX_ENGINE_AMORTIZED, each worker builds
  * its own trees of a frame once), so a warm call allocates nothing per
  * configuration.  Each worker also keeps its own copy of the link set
