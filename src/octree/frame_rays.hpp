@@ -4,6 +4,7 @@
 // a ray whose end lies outside the map dropped.
 #pragma once
 
+#include "broadphase/morton.hpp"
 #include "octree/frame_marks.hpp"
 #include "octree/point_extent.hpp"
 #include "octree/sensor_octree.hpp"
@@ -35,18 +36,16 @@ struct FrameRays {
     std::vector<CellExtent> hit_extents;
     KeyBox box;  // keys of the origin and every end
 
-    // Calls hit(key) with the key of every end that is an occupied cell.
+    // Calls hit(key) once for every occupied end cell (an end of a ray not
+    // cut at max_range), from the hit extents' codes: a few thousand cells
+    // where the rays number hundreds of thousands.
     template <class Hit>
     void for_each_hit(Hit &&hit) const {
-        for (const RaySegment &segment : segments) {
-            auto cut = segment.cut.begin();
-            for (uint32_t i = 0; i < segment.end_keys.size(); ++i) {
-                if (cut != segment.cut.end() && *cut == i) {
-                    ++cut;
-                    continue;
-                }
-                hit(segment.end_keys[i]);
-            }
+        for (const CellExtent &cell : hit_extents) {
+            uint32_t x, y, z;
+            morton_decode(cell.code, x, y, z);
+            hit(octomap::OcTreeKey(static_cast<octomap::key_type>(x), static_cast<octomap::key_type>(y),
+                                   static_cast<octomap::key_type>(z)));
         }
     }
 };
