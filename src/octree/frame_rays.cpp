@@ -54,12 +54,16 @@ private:
 };
 
 // Once a point: inlined at both calls (GCC keeps one out-of-line copy otherwise).
+// Neighbouring points of a scan mostly end in one cell: the box grows only
+// when the key differs from the last ray's.
 inline __attribute__((always_inline)) void add_ray(const octomap::point3d &end, const octomap::OcTreeKey &key,
                                                    RaySegment &rays, KeyBox &box) {
+    if (rays.end_keys.empty() || !(rays.end_keys.back() == key)) {
+        const uint32_t k[3] = {key[0], key[1], key[2]};
+        box.grow(k);
+    }
     rays.ends.push_back(end);
     rays.end_keys.push_back(key);
-    const uint32_t k[3] = {key[0], key[1], key[2]};
-    box.grow(k);
 }
 
 struct RayPart {

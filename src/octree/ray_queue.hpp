@@ -39,6 +39,7 @@ public:
         : origin_(origin), origin_key_(origin_key), ends_(ends), end_keys_(end_keys), next_(begin), end_(end),
           marks_(marks), strays_(strays) {
         for (int i = 0; i < 3; ++i) origin_cell_[i] = origin_key[i];
+        last_end_key_ = origin_key;
         origin_inside_ = marks.holds(origin_cell_, kOriginMargin);
         origin_bit_ = origin_inside_ ? marks.bit_of(origin_cell_) : 0;
         const int down[3] = {-1, -1, -1}, up[3] = {1, 1, 1};
@@ -73,7 +74,12 @@ public:
     // Starts ray `index` in the origin's cell, which it marks.
     void start(size_t index, const RaySetup &setup, LaneRay &ray) {
         const octomap::OcTreeKey &key = end_keys_[index];
-        const uint32_t end_cell[3] = {key[0], key[1], key[2]};
+        // Neighbouring rays mostly end in one cell: its bit is kept.
+        if (!(key == last_end_key_)) {
+            const uint32_t end_cell[3] = {key[0], key[1], key[2]};
+            last_end_key_ = key;
+            last_end_bit_ = marks_.bit_of(end_cell);
+        }
         for (int axis = 0; axis < 3; ++axis) {  // an axis without steps is never chosen
             const BitMoves &m = moves_[setup.step[axis] > 0];
             ray.moves.in_brick[axis] = m.in_brick[axis];
@@ -82,7 +88,7 @@ public:
             ray.moves.edge_value[axis] = m.edge_value[axis];
         }
         ray.bit = origin_bit_;
-        ray.last_bit = marks_.bit_of(end_cell);
+        ray.last_bit = last_end_bit_;
         marks_.mark_crossed(origin_bit_);
     }
 
@@ -109,6 +115,10 @@ private:
     bool origin_inside_ = false;
     BitMoves moves_[2];  // every axis stepping down, up
     uint64_t origin_bit_ = 0;
+    // The end cell of the last ray started and its bit; the origin's cell
+    // at first, which no started ray ends in.
+    octomap::OcTreeKey last_end_key_;
+    uint64_t last_end_bit_ = 0;
     const std::vector<octomap::point3d> &ends_;
     const std::vector<octomap::OcTreeKey> &end_keys_;
     size_t next_;
