@@ -152,7 +152,6 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
             if (!settings.raycast) continue;
             const octomap::point3d cut = origin + (p - origin).normalized() * static_cast<float>(settings.max_range);
             if (!mapper.key(cut, key)) continue;
-            rays.cut.push_back(static_cast<uint32_t>(rays.ends.size()));
             add_ray(cut, key, rays, part.box);
             continue;
         }
@@ -182,7 +181,6 @@ void append(std::vector<T> &to, const std::vector<T> &from) {
 void order_by_end(FrameRays &rays) {
     RaySegment all;
     for (const RaySegment &segment : rays.segments) {
-        for (const uint32_t cut : segment.cut) all.cut.push_back(static_cast<uint32_t>(all.ends.size()) + cut);
         append(all.ends, segment.ends);
         append(all.end_keys, segment.end_keys);
     }
@@ -198,15 +196,12 @@ void order_by_end(FrameRays &rays) {
     RadixSortOptions options;
     options.key_bits = 48;
     radix_sort(codes, order, scratch, options);
-    std::vector<uint8_t> is_cut(all.cut.empty() ? 0 : count, 0);
-    for (const uint32_t cut : all.cut) is_cut[cut] = 1;
     RaySegment sorted;
     sorted.ends.resize(count);
     sorted.end_keys.resize(count);
     for (size_t i = 0; i < count; ++i) {
         sorted.ends[i] = all.ends[order[i]];
         sorted.end_keys[i] = all.end_keys[order[i]];
-        if (!is_cut.empty() && is_cut[order[i]]) sorted.cut.push_back(static_cast<uint32_t>(i));
     }
     rays.segments.clear();
     rays.segments.push_back(std::move(sorted));

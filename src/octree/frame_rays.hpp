@@ -17,12 +17,12 @@
 namespace octoprox {
 
 // The rays of one run of the frame's points (one per thread that
-// prepared them), in the points' order: each ray's end and its key.  The
-// ends are occupied cells but those of `cut` (rays cut at max_range).
+// prepared them), in the points' order: each ray's end and its key.  Rays
+// cut at max_range are among them; the occupied end cells are the hit
+// extents' (FrameRays::for_each_hit).
 struct RaySegment {
     std::vector<octomap::point3d> ends;
     std::vector<octomap::OcTreeKey> end_keys;
-    std::vector<uint32_t> cut;  // ascending
 };
 
 struct FrameRays {
