@@ -25,14 +25,14 @@ inline void cpu_relax() {
 
 // Calls done() (which must not block) until it holds or kSpin has passed.
 template <class Done>
-bool spin_until(Done &&done) {
+void spin_until(Done &&done) {
     const auto until = std::chrono::steady_clock::now() + kSpin;
     for (;;) {
         for (int i = 0; i < 64; ++i) {
-            if (done()) return true;
+            if (done()) return;
             cpu_relax();
         }
-        if (std::chrono::steady_clock::now() >= until) return false;
+        if (std::chrono::steady_clock::now() >= until) return;
     }
 }
 

@@ -1,8 +1,9 @@
 // Splitting a batch's items over threads: each task (task 0 on the
 // caller's thread, base/parallel.hpp) takes the next chunk of items until
 // none is left, so threads that draw cheap items (a configuration that
-// collides early) take more, and the chunks shrink towards the end.  Which thread answers an item never changes
-// the answer: every item is checked on its own.
+// collides early) take more, and the chunks shrink towards the end.
+// Which thread answers an item never changes the answer: every item is
+// checked on its own.
 #pragma once
 
 #include "base/parallel.hpp"
