@@ -7,6 +7,7 @@
 //   opx-bench-ingest [--reps N] [--quick] [--generated] [--data DIR] [--json FILE]
 #include "bench_frame.hpp"
 #include "bench_pipelines.hpp"
+#include "machine_probe.hpp"
 
 #include <octoprox/octoprox.h>
 
@@ -130,8 +131,14 @@ void print_table(const std::vector<Row> &rows, int reps) {
 
 std::string json_number(double value) { return value > 0 ? std::to_string(value) : "null"; }
 
+// The machine the rows were measured on.
+struct Machine {
+    std::string cpu;
+    bench::ThreadSpeed at_start, at_end;  // integer additions a ns (machine_probe.hpp)
+};
+
 void write_json(const std::string &path, const std::vector<Row> &rows, const bench::Frame &frame, int reps,
-                const std::string &cpu) {
+                const Machine &machine) {
     std::FILE *out = std::fopen(path.c_str(), "w");
     if (out == nullptr) throw std::runtime_error("cannot write " + path);
     std::fprintf(out, "[\n");
@@ -144,7 +151,9 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
                      "\"memory_bytes\": %llu, \"bytes_per_leaf\": %.2f, \"heap_bytes\": %llu, "
                      "\"heap_bytes_per_leaf\": %.2f, \"octoprox_over_this\": %s, \"octomap_over_this\": %s, "
                      "\"ray_steps\": %llu, \"distinct_cells\": %llu, \"ns_per_step\": %s, "
-                     "\"points\": %zu, \"finite_points\": %zu, \"cpu\": \"%s\"}%s\n",
+                     "\"points\": %zu, \"finite_points\": %zu, \"cpu\": \"%s\", "
+                     "\"adds_per_ns_one_thread_at_start\": %.2f, \"adds_per_ns_each_of_two_at_start\": %.2f, "
+                     "\"adds_per_ns_one_thread_at_end\": %.2f, \"adds_per_ns_each_of_two_at_end\": %.2f}%s\n",
                      r.resolution, r.mode, r.frame, bench::pipeline_name(r.pipeline), two ? 2 : 1,
                      r.result.median_ms(), reps, (unsigned long long)r.result.occupied,
                      (unsigned long long)r.result.free, (unsigned long long)r.result.memory_bytes,
@@ -152,7 +161,9 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
                      r.result.heap_bytes_per_leaf(), json_number(r.ratio).c_str(),
                      json_number(r.octomap_over_this).c_str(), (unsigned long long)r.work.steps,
                      (unsigned long long)r.work.distinct_cells, json_number(r.ns_per_step()).c_str(), frame.count,
-                     frame.finite_count, cpu.c_str(), i + 1 < rows.size() ? "," : "");
+                     frame.finite_count, machine.cpu.c_str(), machine.at_start.one_thread, machine.at_start.each_of_two,
+                     machine.at_end.one_thread, machine.at_end.each_of_two,
+                     i + 1 < rows.size() ? "," : "");
     }
     std::fprintf(out, "]\n");
     std::fclose(out);
@@ -185,15 +196,20 @@ int main(int argc, char **argv) {
         std::printf("OctoProx %s ingest benchmark\n", opx_version());
         std::printf("frame: %s\n       %ux%u = %zu points, %zu finite; %d repetition(s) per row, fresh tree each\n",
                     frame.source.c_str(), frame.width, frame.height, frame.count, frame.finite_count, args.reps);
+        Machine machine;
+        machine.cpu = cpu_name();
+        machine.at_start = bench::measure_thread_speed();
         std::vector<Row> rows;
         run_resolution(frame, 0.05, args.reps, rows);
         if (!args.quick) run_resolution(frame, 0.02, args.reps, rows);
+        machine.at_end = bench::measure_thread_speed();
         print_table(rows, args.reps);
         if (!args.json_path.empty()) {
-            write_json(args.json_path, rows, frame, args.reps, cpu_name());
+            write_json(args.json_path, rows, frame, args.reps, machine);
             std::printf("\nrows written to %s\n", args.json_path.c_str());
         }
-        std::printf("\ncpu: %s\npeak RSS: %.1f MiB\n", cpu_name().c_str(), peak_rss_kib() / 1024.0);
+        std::printf("\ncpu: %s\npeak RSS: %.1f MiB\n", machine.cpu.c_str(), peak_rss_kib() / 1024.0);
+        bench::print_thread_speeds(machine.at_start, machine.at_end);
     } catch (const std::exception &e) {
         std::fprintf(stderr, "opx-bench-ingest: %s\n", e.what());
         return 1;

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "machine_probe.hpp"
+
 namespace batch_bench {
 
 struct Row {
@@ -17,7 +19,13 @@ struct Row {
 };
 
 void print_rows(const std::vector<Row> &rows);
-bool write_rows_json(const std::string &path, const std::vector<Row> &rows, const std::string &cpu,
-                     const std::string &load);
+// Where the rows were measured: the CPU, the load average, and the
+// threads' speed at the start and the end (machine_probe.hpp).
+struct Machine {
+    std::string cpu, load;
+    bench::ThreadSpeed at_start, at_end;
+};
+
+bool write_rows_json(const std::string &path, const std::vector<Row> &rows, const Machine &machine);
 
 }  // namespace batch_bench

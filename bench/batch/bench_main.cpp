@@ -1,6 +1,7 @@
 #include "bench_main.hpp"
 
 #include "pr2_scene.hpp"
+#include "machine_probe.hpp"
 #include "report.hpp"
 
 #include <octoprox/octoprox.h>
@@ -59,13 +60,17 @@ int run_program(const BenchProgram &program, int argc, char **argv, BenchOptions
                     missing.c_str());
         return 77;
     }
-    const std::string cpu = paper_tables::cpu_name(), load = paper_tables::load_average();
-    std::printf("%s (OctoProx %s)\nCPU: %s\nload average at start: %s\n", program.name, opx_version(), cpu.c_str(),
-                load.c_str());
+    Machine machine;
+    machine.cpu = paper_tables::cpu_name(), machine.load = paper_tables::load_average();
+    machine.at_start = bench::measure_thread_speed();
+    std::printf("%s (OctoProx %s)\nCPU: %s\nload average at start: %s\n", program.name, opx_version(),
+                machine.cpu.c_str(), machine.load.c_str());
     const BenchOutcome outcome = run(options);
     print_rows(outcome.rows);
+    machine.at_end = bench::measure_thread_speed();
     std::printf("load average at end: %s\n", paper_tables::load_average().c_str());
-    if (!json_path.empty() && !write_rows_json(json_path, outcome.rows, cpu, load)) {
+    bench::print_thread_speeds(machine.at_start, machine.at_end);
+    if (!json_path.empty() && !write_rows_json(json_path, outcome.rows, machine)) {
         std::fprintf(stderr, "%s: cannot write %s\n", program.name, json_path.c_str());
         return 1;
     }
