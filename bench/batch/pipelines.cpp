@@ -30,17 +30,11 @@ std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pip
         timings[p].collided.assign(count, 0);
         pipelines[p](timings[p].collided, 0, count);
     }
-    for (int round = 0; round < work.rounds; ++round) {
-        std::vector<double> ms(n, 0.0);
-        for (size_t begin = 0, chunk = 0; begin < count; begin += kChunkConfigurations, ++chunk) {
-            const size_t end = std::min(count, begin + kChunkConfigurations);
-            for (size_t k = 0; k < n; ++k) {
-                const size_t p = (k + size_t(round) + chunk) % n;
-                ms[p] += pipelines[p](scratch, begin, end);
-            }
+    for (int round = 0; round < work.rounds; ++round)
+        for (size_t k = 0; k < n; ++k) {
+            const size_t p = (k + size_t(round)) % n;
+            us[p].push_back(1000.0 * pipelines[p](scratch, 0, count) / double(count));
         }
-        for (size_t p = 0; p < n; ++p) us[p].push_back(1000.0 * ms[p] / double(count));
-    }
     for (size_t p = 0; p < n; ++p) {
         timings[p].us_per_configuration = paper_tables::median(us[p]);
         timings[p].fastest_us = *std::min_element(us[p].begin(), us[p].end());

@@ -39,12 +39,10 @@ Pipeline single_calls(const Workload &work);
 Pipeline batch_call(const Workload &work, uint32_t threads);
 Pipeline fcl_calls(const Workload &work, FclCheck &fcl);
 
-// Each pipeline once untimed (its answers), then work.rounds rounds; a
-// round goes through the set in chunks of kChunkConfigurations, every
-// pipeline answering a chunk before the next chunk, the order rotating.
-// A change of the machine's speed (other work on a shared machine) so
-// hits every pipeline alike, even FCL's, which takes ten times as long.
-constexpr size_t kChunkConfigurations = 1000;
+// Each pipeline once untimed (its answers), then work.rounds rounds; in a
+// round every pipeline answers the whole set (a batch pipeline in one
+// call, as a planner's calls come one after another), the order rotating
+// from round to round.
 std::vector<Timing> time_interleaved(const Workload &work, const std::vector<Pipeline> &pipelines);
 
 constexpr double kMotionResolution = 0.02;  // rad
