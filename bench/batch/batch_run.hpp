@@ -12,7 +12,9 @@ namespace batch_bench {
 struct RunOptions {
     bool quick = false;
     size_t configurations = 10000;  // per robot and map
-    int rounds = 3;
+    // Each a few seconds (FCL's pass over the set); the median of five
+    // holds through a shared machine's slow spells of that length.
+    int rounds = 5;
 };
 
 struct RunResult {
