@@ -1,7 +1,7 @@
 #include "bench_main.hpp"
 
-#include "pr2_scene.hpp"
 #include "machine_probe.hpp"
+#include "pr2_scene.hpp"
 #include "report.hpp"
 
 #include <octoprox/octoprox.h>

@@ -127,8 +127,8 @@ void place_shape(const ShapeDef &def, const Pose &link_pose, double padding, boo
     if (def.kind == ShapeKind::kSphere) return place_sphere(def, link_pose, padding, enabled, out);
     // Most shapes sit unturned at their link's origin (42 and 53 of the
     // PR2's 54): the link's own rotation and origin are what the products
-    // give them, bit for bit, and a batch places every shape of a moved
-    // link for each configuration.
+    // give them (a zero's sign aside), and a batch places every shape of a
+    // moved link for each configuration.
     const Eigen::Matrix3d rotation =
         def.local.rotation == Eigen::Matrix3d::Identity() ? link_pose.rotation : link_pose.rotation * def.local.rotation;
     const Vec3 center = def.local.translation.isZero(0.0) ? link_pose.translation : link_pose.apply(def.local.translation);
