@@ -141,6 +141,7 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
                 const Machine &machine) {
     std::FILE *out = std::fopen(path.c_str(), "w");
     if (out == nullptr) throw std::runtime_error("cannot write " + path);
+    const std::string speeds = bench::thread_speed_json_fields(machine.at_start, machine.at_end);
     std::fprintf(out, "[\n");
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row &r = rows[i];
@@ -151,9 +152,7 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
                      "\"memory_bytes\": %llu, \"bytes_per_leaf\": %.2f, \"heap_bytes\": %llu, "
                      "\"heap_bytes_per_leaf\": %.2f, \"octoprox_over_this\": %s, \"octomap_over_this\": %s, "
                      "\"ray_steps\": %llu, \"distinct_cells\": %llu, \"ns_per_step\": %s, "
-                     "\"points\": %zu, \"finite_points\": %zu, \"cpu\": \"%s\", "
-                     "\"adds_per_ns_one_thread_at_start\": %.2f, \"adds_per_ns_each_of_two_at_start\": %.2f, "
-                     "\"adds_per_ns_one_thread_at_end\": %.2f, \"adds_per_ns_each_of_two_at_end\": %.2f}%s\n",
+                     "\"points\": %zu, \"finite_points\": %zu, \"cpu\": \"%s\", %s}%s\n",
                      r.resolution, r.mode, r.frame, bench::pipeline_name(r.pipeline), two ? 2 : 1,
                      r.result.median_ms(), reps, (unsigned long long)r.result.occupied,
                      (unsigned long long)r.result.free, (unsigned long long)r.result.memory_bytes,
@@ -161,9 +160,7 @@ void write_json(const std::string &path, const std::vector<Row> &rows, const ben
                      r.result.heap_bytes_per_leaf(), json_number(r.ratio).c_str(),
                      json_number(r.octomap_over_this).c_str(), (unsigned long long)r.work.steps,
                      (unsigned long long)r.work.distinct_cells, json_number(r.ns_per_step()).c_str(), frame.count,
-                     frame.finite_count, machine.cpu.c_str(), machine.at_start.one_thread, machine.at_start.each_of_two,
-                     machine.at_end.one_thread, machine.at_end.each_of_two,
-                     i + 1 < rows.size() ? "," : "");
+                     frame.finite_count, machine.cpu.c_str(), speeds.c_str(), i + 1 < rows.size() ? "," : "");
     }
     std::fprintf(out, "]\n");
     std::fclose(out);

@@ -55,4 +55,13 @@ void print_thread_speeds(const ThreadSpeed &at_start, const ThreadSpeed &at_end)
                 at_start.one_thread, at_start.each_of_two, at_end.one_thread, at_end.each_of_two);
 }
 
+std::string thread_speed_json_fields(const ThreadSpeed &at_start, const ThreadSpeed &at_end) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "\"adds_per_ns_one_thread_at_start\": %.2f, \"adds_per_ns_each_of_two_at_start\": %.2f, "
+                  "\"adds_per_ns_one_thread_at_end\": %.2f, \"adds_per_ns_each_of_two_at_end\": %.2f",
+                  at_start.one_thread, at_start.each_of_two, at_end.one_thread, at_end.each_of_two);
+    return text;
+}
+
 }  // namespace bench

@@ -6,6 +6,8 @@
 // so that their one- and two-thread rows can be read for what they are.
 #pragma once
 
+#include <string>
+
 namespace bench {
 
 // Integer additions a nanosecond of a loop that keeps a core's adders busy
@@ -22,5 +24,9 @@ ThreadSpeed measure_thread_speed();
 
 // Prints the speeds measured at a run's start and end.
 void print_thread_speeds(const ThreadSpeed &at_start, const ThreadSpeed &at_end);
+
+// The same as the JSON fields every benchmark row carries, comma-separated
+// without braces: "adds_per_ns_one_thread_at_start": ..., and so on.
+std::string thread_speed_json_fields(const ThreadSpeed &at_start, const ThreadSpeed &at_end);
 
 }  // namespace bench

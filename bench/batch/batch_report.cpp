@@ -38,6 +38,7 @@ void print_rows(const std::vector<Row> &rows) {
 bool write_rows_json(const std::string &path, const std::vector<Row> &rows, const Machine &machine) {
     FILE *out = std::fopen(path.c_str(), "w");
     if (out == nullptr) return false;
+    const std::string speeds = bench::thread_speed_json_fields(machine.at_start, machine.at_end);
     std::fprintf(out, "[\n");
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row &row = rows[i];
@@ -46,14 +47,8 @@ bool write_rows_json(const std::string &path, const std::vector<Row> &rows, cons
                      json_number(row.us_per_configuration).c_str());
         for (const auto &field : row.fields)
             std::fprintf(out, ", %s: %s", json_string(field.first).c_str(), json_number(field.second).c_str());
-        std::fprintf(out,
-                     ", \"cpu\": %s, \"load_average\": %s, \"adds_per_ns_one_thread_at_start\": %s, "
-                     "\"adds_per_ns_each_of_two_at_start\": %s, \"adds_per_ns_one_thread_at_end\": %s, "
-                     "\"adds_per_ns_each_of_two_at_end\": %s}%s\n",
-                     json_string(machine.cpu).c_str(), json_string(machine.load).c_str(),
-                     json_number(machine.at_start.one_thread).c_str(), json_number(machine.at_start.each_of_two).c_str(),
-                     json_number(machine.at_end.one_thread).c_str(), json_number(machine.at_end.each_of_two).c_str(),
-                     i + 1 < rows.size() ? "," : "");
+        std::fprintf(out, ", \"cpu\": %s, \"load_average\": %s, %s}%s\n", json_string(machine.cpu).c_str(),
+                     json_string(machine.load).c_str(), speeds.c_str(), i + 1 < rows.size() ? "," : "");
     }
     std::fprintf(out, "]\n");
     return std::fclose(out) == 0;
