@@ -73,13 +73,6 @@ public:
 
     // Starts ray `index` in the origin's cell, which it marks.
     void start(size_t index, const RaySetup &setup, LaneRay &ray) {
-        const octomap::OcTreeKey &key = end_keys_[index];
-        // Neighbouring rays mostly end in one cell: its bit is kept.
-        if (!(key == last_end_key_)) {
-            const uint32_t end_cell[3] = {key[0], key[1], key[2]};
-            last_end_key_ = key;
-            last_end_bit_ = marks_.bit_of(end_cell);
-        }
         for (int axis = 0; axis < 3; ++axis) {  // an axis without steps is never chosen
             const BitMoves &m = moves_[setup.step[axis] > 0];
             ray.moves.in_brick[axis] = m.in_brick[axis];
@@ -88,8 +81,20 @@ public:
             ray.moves.edge_value[axis] = m.edge_value[axis];
         }
         ray.bit = origin_bit_;
-        ray.last_bit = last_end_bit_;
+        ray.last_bit = end_bit(index);
         marks_.mark_crossed(origin_bit_);
+    }
+
+    // The bit of ray `index`'s end cell, where its walk stops.
+    uint64_t end_bit(size_t index) {
+        const octomap::OcTreeKey &key = end_keys_[index];
+        // Neighbouring rays mostly end in one cell: its bit is kept.
+        if (!(key == last_end_key_)) {
+            const uint32_t end_cell[3] = {key[0], key[1], key[2]};
+            last_end_key_ = key;
+            last_end_bit_ = marks_.bit_of(end_cell);
+        }
+        return last_end_bit_;
     }
 
     const RayOrigin &origin() const { return origin_; }

@@ -36,9 +36,17 @@ RayOrigin ray_origin(const BoundedOcTree &tree, const octomap::OcTreeKey &origin
 // OctoMap's computeRayKeys initialisation for origin -> end (keys differ).
 RaySetup ray_setup(const RayOrigin &origin, const octomap::point3d &end);
 
-// The same for four rays at once with AVX2 (ray_setup_avx2.cpp), only
-// where cpu_has_avx2() (base/avx2.hpp) says so.
-void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetup out[4]);
+// Four rays' RaySetup, lane by lane, as the walk's vectors load them.
+struct alignas(32) RaySetupFour {
+    double next_face[3][4];
+    double face_spacing[3][4];
+    double length[4];
+    int64_t step[3][4];
+};
+
+// The same as ray_setup for four rays at once with AVX2
+// (ray_setup_avx2.cpp), only where cpu_has_avx2() (base/avx2.hpp) says so.
+void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetupFour &out);
 
 // How one step along an axis moves the mark's bit: x + 8 y + 64 z inside
 // a brick, the brick's index times 512 across bricks.

@@ -23,7 +23,7 @@ OPX_AVX2 __m128i step_of(__m128 d) {
 
 }  // namespace
 
-OPX_AVX2 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetup out[4]) {
+OPX_AVX2 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *const ends[4], RaySetupFour &out) {
     __m128 d[3];
     for (int i = 0; i < 3; ++i)
         d[i] = _mm_sub_ps(_mm_setr_ps((*ends[0])(i), (*ends[1])(i), (*ends[2])(i), (*ends[3])(i)),
@@ -32,8 +32,7 @@ OPX_AVX2 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *co
     const __m128 squares =
         _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
     const __m128 length = _mm256_cvtpd_ps(_mm256_sqrt_pd(_mm256_cvtps_pd(squares)));
-    alignas(16) float lengths[4];
-    _mm_store_ps(lengths, length);
+    _mm256_store_pd(out.length, _mm256_cvtps_pd(length));
     const __m256d resolution = _mm256_set1_pd(origin.resolution);
     const __m256d none = _mm256_set1_pd(std::numeric_limits<double>::max());
     for (int i = 0; i < 3; ++i) {
@@ -46,20 +45,10 @@ OPX_AVX2 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *co
         const __m256d moves = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_xor_si128(
             _mm_cmpeq_epi32(step, _mm_setzero_si128()), _mm_set1_epi32(-1))));
         const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), wide);
-        const __m256d next_face = _mm256_blendv_pd(none, _mm256_div_pd(to_face, wide), moves);
-        const __m256d spacing = _mm256_blendv_pd(none, _mm256_div_pd(resolution, magnitude), moves);
-        alignas(32) double faces[4], spacings[4];
-        alignas(16) int steps[4];
-        _mm256_store_pd(faces, next_face);
-        _mm256_store_pd(spacings, spacing);
-        _mm_store_si128(reinterpret_cast<__m128i *>(steps), step);
-        for (int lane = 0; lane < 4; ++lane) {
-            out[lane].next_face[i] = faces[lane];
-            out[lane].face_spacing[i] = spacings[lane];
-            out[lane].step[i] = steps[lane];
-        }
+        _mm256_store_pd(out.next_face[i], _mm256_blendv_pd(none, _mm256_div_pd(to_face, wide), moves));
+        _mm256_store_pd(out.face_spacing[i], _mm256_blendv_pd(none, _mm256_div_pd(resolution, magnitude), moves));
+        _mm256_store_si256(reinterpret_cast<__m256i *>(out.step[i]), _mm256_cvtepi32_epi64(step));
     }
-    for (int lane = 0; lane < 4; ++lane) out[lane].length = lengths[lane];
 }
 
 }  // namespace octoprox
@@ -67,7 +56,7 @@ OPX_AVX2 void ray_setup_four(const RayOrigin &origin, const octomap::point3d *co
 #else
 
 namespace octoprox {
-void ray_setup_four(const RayOrigin &, const octomap::point3d *const[4], RaySetup[4]) {}
+void ray_setup_four(const RayOrigin &, const octomap::point3d *const[4], RaySetupFour &) {}
 }  // namespace octoprox
 
 #endif

@@ -87,14 +87,16 @@ void expect_same_setups(const BoundedOcTree &tree, const Rays &rays) {
     const octoprox::RayOrigin origin = octoprox::ray_origin(tree, rays.origin_key, rays.origin);
     for (size_t i = 0; i + 4 <= rays.ends.size(); i += 4) {
         const octomap::point3d *ends[4] = {&rays.ends[i], &rays.ends[i + 1], &rays.ends[i + 2], &rays.ends[i + 3]};
-        octoprox::RaySetup four[4];
+        octoprox::RaySetupFour four;
         octoprox::ray_setup_four(origin, ends, four);
         for (int lane = 0; lane < 4; ++lane) {
             const octoprox::RaySetup one = octoprox::ray_setup(origin, *ends[lane]);
-            EXPECT_EQ(std::memcmp(one.next_face, four[lane].next_face, sizeof one.next_face), 0);
-            EXPECT_EQ(std::memcmp(one.face_spacing, four[lane].face_spacing, sizeof one.face_spacing), 0);
-            EXPECT_EQ(std::memcmp(one.step, four[lane].step, sizeof one.step), 0);
-            EXPECT_EQ(one.length, four[lane].length);
+            for (int axis = 0; axis < 3; ++axis) {
+                EXPECT_EQ(std::memcmp(&one.next_face[axis], &four.next_face[axis][lane], sizeof(double)), 0);
+                EXPECT_EQ(std::memcmp(&one.face_spacing[axis], &four.face_spacing[axis][lane], sizeof(double)), 0);
+                EXPECT_EQ(one.step[axis], four.step[axis][lane]);
+            }
+            EXPECT_EQ(static_cast<double>(one.length), four.length[lane]);
         }
     }
 }
