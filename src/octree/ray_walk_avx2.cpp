@@ -71,9 +71,10 @@ OPX_AVX2 void walk_group(const RaySetupFour &setup, const LaneMoves &moves, __m2
         const __m256d c01 = _mm256_cmp_pd(t0, t1, _CMP_LT_OQ), c02 = _mm256_cmp_pd(t0, t2, _CMP_LT_OQ);
         const __m256d c12 = _mm256_cmp_pd(t1, t2, _CMP_LT_OQ);
         const __m256d is0 = _mm256_and_pd(c01, c02), is1 = _mm256_andnot_pd(c01, c12);
-        t0 = _mm256_blendv_pd(t0, _mm256_add_pd(t0, d0), is0);
-        t1 = _mm256_blendv_pd(t1, _mm256_add_pd(t1, d1), is1);
-        t2 = _mm256_blendv_pd(_mm256_add_pd(t2, d2), t2, _mm256_or_pd(is0, is1));
+        // Adding +0.0 leaves a face parameter (positive) as it is.
+        t0 = _mm256_add_pd(t0, _mm256_and_pd(is0, d0));
+        t1 = _mm256_add_pd(t1, _mm256_and_pd(is1, d1));
+        t2 = _mm256_add_pd(t2, _mm256_andnot_pd(_mm256_or_pd(is0, is1), d2));
         const __m256d past = _mm256_cmp_pd(_mm256_min_pd(_mm256_min_pd(t0, t1), t2), length, _CMP_GT_OQ);
         // The bit's move along that axis, into the next brick when the
         // in-brick coordinate is at the brick's edge.
@@ -93,28 +94,51 @@ OPX_AVX2 void walk_group(const RaySetupFour &setup, const LaneMoves &moves, __m2
     }
 }
 
+// Four rays with their set-up and the bits of their end cells.
+struct alignas(32) RayGroup {
+    RaySetupFour setup;
+    int64_t last[kLanes];
+    bool full = false;
+
+    // Takes the queue's next rays; false when none is left.  A short group
+    // repeats its last ray, which marks the same cells.
+    OPX_AVX2 bool take(RayQueue &queue) {
+        size_t index[kLanes];
+        int count = 0;
+        while (count < kLanes && queue.next_index(index[count])) ++count;
+        if (count == 0) return false;
+        full = count == kLanes;
+        for (int lane = count; lane < kLanes; ++lane) index[lane] = index[count - 1];
+        const octomap::point3d *ends[kLanes];
+        for (int lane = 0; lane < kLanes; ++lane) ends[lane] = &queue.end_point(index[lane]);
+        ray_setup_four(queue.origin(), ends, setup);
+        _mm256_store_si256(reinterpret_cast<__m256i *>(last),
+                           _mm256_setr_epi64x(static_cast<int64_t>(queue.end_bit(index[0])),
+                                              static_cast<int64_t>(queue.end_bit(index[1])),
+                                              static_cast<int64_t>(queue.end_bit(index[2])),
+                                              static_cast<int64_t>(queue.end_bit(index[3]))));
+        return true;
+    }
+};
+
 }  // namespace
 
 OPX_AVX2 void walk_four(RayQueue &queue, FrameMarks &marks) {
     const int up[3] = {1, 1, 1};
     const BitMoves up_moves = bit_moves(up, marks);
-    size_t index[kLanes];
-    RaySetupFour setup;
+    RayGroup groups[2];
+    int current = 0;
+    if (!groups[current].take(queue)) return;
+    marks.mark_crossed(queue.origin_bit());
     for (;;) {
-        int count = 0;
-        while (count < kLanes && queue.next_index(index[count])) ++count;
-        if (count == 0) return;
-        // A short group repeats its last ray, which marks the same cells.
-        for (int lane = count; lane < kLanes; ++lane) index[lane] = index[count - 1];
-        const octomap::point3d *ends[kLanes];
-        for (int lane = 0; lane < kLanes; ++lane) ends[lane] = &queue.end_point(index[lane]);
-        ray_setup_four(queue.origin(), ends, setup);
-        const __m256i last = _mm256_setr_epi64x(
-            static_cast<int64_t>(queue.end_bit(index[0])), static_cast<int64_t>(queue.end_bit(index[1])),
-            static_cast<int64_t>(queue.end_bit(index[2])), static_cast<int64_t>(queue.end_bit(index[3])));
-        marks.mark_crossed(queue.origin_bit());
-        walk_group(setup, lane_moves(setup, up_moves), last, queue.origin_bit(), marks);
-        if (count < kLanes) return;
+        // The next group is set up before this one is walked: its
+        // divisions and square roots then run beside the walk.
+        RayGroup &group = groups[current], &next = groups[1 - current];
+        const bool more = group.full && next.take(queue);
+        walk_group(group.setup, lane_moves(group.setup, up_moves),
+                   _mm256_load_si256(reinterpret_cast<const __m256i *>(group.last)), queue.origin_bit(), marks);
+        if (!more) return;
+        current = 1 - current;
     }
 }
 
