@@ -90,6 +90,15 @@ void grow_by_brick(KeyBox &box, uint64_t brick_code, const uint64_t bits[brick::
     box.grow(hi);
 }
 
+// A brick's two kinds of marks, in brick order.
+struct BrickMarks {
+    BrickMarks(const FrameMarks &marks, size_t index) {
+        marks.crossed_brick(index, crossed);
+        marks.endpoint_brick(index, endpoint);
+    }
+    uint64_t crossed[brick::kWords], endpoint[brick::kWords];
+};
+
 // One thread's share of the cells: its bricks' cells written from `out`
 // on, its counts and box.
 struct EmitPart {
@@ -127,16 +136,20 @@ size_t cells_in_brick(const uint64_t *crossed, const uint64_t *endpoint) {
 void emit_bricks(const FrameMarks &marks, const std::vector<uint64_t> &codes, const std::vector<uint32_t> &bricks,
                  size_t threads, FrameCells &out) {
     std::vector<size_t> first_cell(codes.size() + 1, 0);
-    for (size_t i = 0; i < codes.size(); ++i)
-        first_cell[i + 1] = first_cell[i] + cells_in_brick(marks.crossed(bricks[i]), marks.endpoint(bricks[i]));
+    for (size_t i = 0; i < codes.size(); ++i) {
+        BrickMarks brick(marks, bricks[i]);
+        first_cell[i + 1] = first_cell[i] + cells_in_brick(brick.crossed, brick.endpoint);
+    }
     out.cells.resize(first_cell.back());
     std::vector<EmitPart> parts(threads);
     run_tasks(threads, [&](size_t t) {
         const size_t begin = codes.size() * t / threads, end = codes.size() * (t + 1) / threads;
         EmitPart &part = parts[t];
         part.out = out.cells.data() + first_cell[begin];
-        for (size_t i = begin; i < end; ++i)
-            emit_brick(codes[i], marks.crossed(bricks[i]), marks.endpoint(bricks[i]), part);
+        for (size_t i = begin; i < end; ++i) {
+            BrickMarks brick(marks, bricks[i]);
+            emit_brick(codes[i], brick.crossed, brick.endpoint, part);
+        }
     });
     for (const EmitPart &part : parts) {
         out.hits += part.hits;
@@ -179,7 +192,8 @@ FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra, s
     for (uint32_t z = 0; z < n[2]; ++z)
         for (uint32_t y = 0; y < n[1]; ++y)
             for (uint32_t x = 0; x < n[0]; ++x, ++index) {
-                if (is_empty(marks.crossed(index)) && is_empty(marks.endpoint(index))) continue;
+                BrickMarks brick(marks, index);
+                if (is_empty(brick.crossed) && is_empty(brick.endpoint)) continue;
                 codes.push_back(morton_encode((lo[0] >> brick::kShift) + x, (lo[1] >> brick::kShift) + y,
                                               (lo[2] >> brick::kShift) + z));
                 bricks.push_back(static_cast<uint32_t>(index));

@@ -1,15 +1,20 @@
 // The cells one sensor frame touches, as two marks per cell (crossed by a
-// ray, holds an endpoint): bitmaps over the frame's box of keys, laid out
-// in bricks of 8x8x8 cells.
+// ray, holds an endpoint): bitmaps over the frame's box of keys, grown to
+// whole bricks of 8x8x8 cells.
 //
 // A ray-cast frame steps through millions of cells but touches far fewer
 // distinct ones, as rays from one origin cross the same cells near the
 // sensor.  OctoMap inserts every step into a hash set; here a step is one
-// OR into a bit.  Within a brick a step moves the bit by 1, 8 or 64, and a
-// brick is 64 bytes, so a ray stays in a cache line for several steps.
-// A brick is also the subtree of the map 3 levels above the leaves, which
-// is how frame_cells.hpp reads the cells out in the map's depth-first
-// order.
+// OR into a bit.  Two layouts:
+//   - bricks, for large boxes: within a brick a step moves the bit by 1, 8
+//     or 64, and a brick is 64 bytes, so a ray stays in a cache line for
+//     several steps;
+//   - rows of cells along x, for boxes whose marks fit a core's caches
+//     (at most kRowsMaxCells): a step moves the bit by the same amount
+//     wherever it is, which saves the walk the test for a brick's edge.
+// A brick is the subtree of the map 3 levels above the leaves: the cells
+// are read out brick by brick (brick_words), in either layout, which is
+// how frame_cells.hpp gives them in the map's depth-first order.
 #pragma once
 
 #include <algorithm>
@@ -49,9 +54,13 @@ constexpr int kWords = kBits / 64;
 
 class FrameMarks {
 public:
+    // kBest: rows up to kRowsMaxCells, else bricks.  Every layout gives the
+    // same cells.
+    enum class Layout { kBest, kBricks, kRows };
+
     // Covers `box` (grown outwards to whole bricks) with crossed marks, all
     // cleared.  Throws std::bad_alloc when the bitmap does not fit in memory.
-    void reset(const KeyBox &box);
+    void reset(const KeyBox &box, Layout layout = Layout::kBest);
     // Adds the endpoint marks, cleared, over the same box: only the marks
     // the frame's cells are read from need them (one per frame, not one
     // per thread).  Throws std::bad_alloc as reset.
@@ -59,10 +68,18 @@ public:
     // The most cells a box may hold (128 MiB a bitmap, mostly untouched);
     // larger frames take another way.
     static constexpr uint64_t kMaxCells = uint64_t{1} << 30;
+    // The most cells of a box laid out in rows (512 KiB a bitmap).
+    static constexpr uint64_t kRowsMaxCells = uint64_t{1} << 22;
 
-    // Bit position of a key inside the box: the brick's index times 512
-    // plus x + 8 y + 64 z inside the brick.
+    // Whether the bits run in rows along x (else brick after brick).
+    bool in_rows() const { return in_rows_; }
+
+    // Bit position of a key inside the box: in rows, x + X (y + Y z) for a
+    // box of X by Y by Z cells; in bricks, the brick's index times 512 plus
+    // x + 8 y + 64 z inside the brick.
     uint64_t bit_of(const uint32_t key[3]) const {
+        if (in_rows_)
+            return (key[0] - lo_[0]) + cell_stride_[1] * (key[1] - lo_[1]) + cell_stride_[2] * (key[2] - lo_[2]);
         uint64_t brick_index = 0, local = 0;
         for (int axis = 2; axis >= 0; --axis) {
             const uint32_t k = key[axis] - lo_[axis];
@@ -81,9 +98,13 @@ public:
         return true;
     }
     // How a bit position moves when a key steps +1 along `axis` inside its
-    // brick, and when it steps into the next brick.
-    int64_t unit_step(int axis) const { return int64_t{1} << (brick::kShift * axis); }
-    int64_t brick_step(int axis) const { return brick_stride_[axis] * brick::kBits; }
+    // brick, and when it steps into the next brick (in rows, 8 steps).
+    int64_t unit_step(int axis) const {
+        return in_rows_ ? cell_stride_[axis] : int64_t{1} << (brick::kShift * axis);
+    }
+    int64_t brick_step(int axis) const {
+        return in_rows_ ? cell_stride_[axis] * 8 : brick_stride_[axis] * brick::kBits;
+    }
 
     // ORs another frame's crossed marks over the same box into these.
     void merge_crossed(const FrameMarks &other);
@@ -102,15 +123,24 @@ public:
     const uint32_t *lowest_key() const { return lo_; }  // the first brick's lowest corner
     const uint32_t *bricks_per_axis() const { return bricks_; }
     size_t brick_count() const { return static_cast<size_t>(bricks_[0]) * bricks_[1] * bricks_[2]; }
-    const uint64_t *crossed(size_t brick_index) const { return &crossed_[brick_index * brick::kWords]; }
-    const uint64_t *endpoint(size_t brick_index) const {  // after add_endpoint_marks
-        return &endpoint_[brick_index * brick::kWords];
+    // A brick's (x + X (y + Y z) in bricks) marks in brick order, x + 8 y +
+    // 64 z: the crossed marks, and the endpoint marks (after
+    // add_endpoint_marks).
+    void crossed_brick(size_t brick_index, uint64_t out[brick::kWords]) const {
+        brick_words(crossed_.get(), brick_index, out);
+    }
+    void endpoint_brick(size_t brick_index, uint64_t out[brick::kWords]) const {
+        brick_words(endpoint_.get(), brick_index, out);
     }
 
 private:
+    void brick_words(const uint64_t *marks, size_t brick_index, uint64_t out[brick::kWords]) const;
+
     uint32_t lo_[3] = {0, 0, 0};
     uint32_t bricks_[3] = {0, 0, 0};
     int64_t brick_stride_[3] = {0, 0, 0};
+    bool in_rows_ = false;
+    int64_t cell_stride_[3] = {0, 0, 0};  // in rows: 1, X, X Y
     // calloc'd: a large box costs memory only where rays pass (the kernel
     // hands out zeroed pages on first touch).
     struct FreeWords {

@@ -54,6 +54,9 @@ OPX_AVX2 inline __m256i pick(__m256d is0, __m256d is1, const __m256i (&value)[3]
 }
 
 // Walks one group: every lane from the origin's cell until its ray is done.
+// In rows (FrameMarks::in_rows) a step's move does not depend on where the
+// bit is.
+template <bool kInRows>
 OPX_AVX2 void walk_group(const RaySetupFour &setup, const LaneMoves &moves, __m256i last, uint64_t origin_bit,
                          FrameMarks &marks) {
     const __m256i edge_mask[3] = {_mm256_set1_epi64x(brick::kMask), _mm256_set1_epi64x(brick::kMask << brick::kShift),
@@ -78,11 +81,15 @@ OPX_AVX2 void walk_group(const RaySetupFour &setup, const LaneMoves &moves, __m2
         const __m256d past = _mm256_cmp_pd(_mm256_min_pd(_mm256_min_pd(t0, t1), t2), length, _CMP_GT_OQ);
         // The bit's move along that axis, into the next brick when the
         // in-brick coordinate is at the brick's edge.
-        const __m256i leaves = _mm256_cmpeq_epi64(_mm256_and_si256(bit, pick(is0, is1, edge_mask)),
-                                                  pick(is0, is1, moves.edge_value));
-        const __m256i move = _mm256_add_epi64(pick(is0, is1, moves.in_brick),
-                                              _mm256_and_si256(leaves, pick(is0, is1, moves.brick_change)));
-        bit = _mm256_add_epi64(bit, move);
+        if (kInRows) {
+            bit = _mm256_add_epi64(bit, pick(is0, is1, moves.in_brick));
+        } else {
+            const __m256i leaves = _mm256_cmpeq_epi64(_mm256_and_si256(bit, pick(is0, is1, edge_mask)),
+                                                      pick(is0, is1, moves.edge_value));
+            const __m256i move = _mm256_add_epi64(pick(is0, is1, moves.in_brick),
+                                                  _mm256_and_si256(leaves, pick(is0, is1, moves.brick_change)));
+            bit = _mm256_add_epi64(bit, move);
+        }
         // A lane is done at its end's cell (not marked) or past its end
         // point; from then on it marks the origin's cell, marked already.
         finished = _mm256_or_pd(finished, _mm256_or_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(bit, last)), past));
@@ -121,9 +128,8 @@ struct alignas(32) RayGroup {
     }
 };
 
-}  // namespace
-
-OPX_AVX2 void walk_four(RayQueue &queue, FrameMarks &marks) {
+template <bool kInRows>
+OPX_AVX2 void walk_groups(RayQueue &queue, FrameMarks &marks) {
     const int up[3] = {1, 1, 1};
     const BitMoves up_moves = bit_moves(up, marks);
     RayGroup groups[2];
@@ -135,11 +141,18 @@ OPX_AVX2 void walk_four(RayQueue &queue, FrameMarks &marks) {
         // divisions and square roots then run beside the walk.
         RayGroup &group = groups[current], &next = groups[1 - current];
         const bool more = group.full && next.take(queue);
-        walk_group(group.setup, lane_moves(group.setup, up_moves),
+        walk_group<kInRows>(group.setup, lane_moves(group.setup, up_moves),
                    _mm256_load_si256(reinterpret_cast<const __m256i *>(group.last)), queue.origin_bit(), marks);
         if (!more) return;
         current = 1 - current;
     }
+}
+
+}  // namespace
+
+void walk_four(RayQueue &queue, FrameMarks &marks) {
+    if (marks.in_rows()) walk_groups<true>(queue, marks);
+    else walk_groups<false>(queue, marks);
 }
 
 #else

@@ -1,8 +1,9 @@
 // The ray walk's lanes: four rays at a time (AVX2) mark the same cells as
-// two (SSE2), and ray_setup_four gives every ray's setup bit for bit as
-// ray_setup does, on random rays and on rays through cell faces, edges and
-// corners, along the axes and the diagonals.  The cells themselves are
-// compared with OctoMap end to end by the ingest tests.
+// two (SSE2), in both layouts of the marks (bricks, rows), and
+// ray_setup_four gives every ray's setup bit for bit as ray_setup does, on
+// random rays and on rays through cell faces, edges and corners, along the
+// axes and the diagonals.  The cells themselves are compared with OctoMap
+// end to end by the ingest tests.
 #include "base/avx2.hpp"
 #include "octree/bounded_tree.hpp"
 #include "octree/frame_marks.hpp"
@@ -48,16 +49,20 @@ Rays make_rays(const BoundedOcTree &tree, const octomap::point3d &origin, const 
     return rays;
 }
 
-std::vector<uint64_t> walked_words(const BoundedOcTree &tree, const Rays &rays, RayLanes lanes) {
+std::vector<uint64_t> walked_words(const BoundedOcTree &tree, const Rays &rays, RayLanes lanes,
+                                   FrameMarks::Layout layout) {
     FrameMarks marks;
-    marks.reset(rays.box);
+    marks.reset(rays.box, layout);
     std::vector<uint32_t> strays;
     octoprox::RayWalker(tree, rays.origin, rays.origin_key)
         .walk(rays.ends, rays.end_keys, 0, rays.ends.size(), marks, strays, lanes);
     EXPECT_TRUE(strays.empty());
     std::vector<uint64_t> words;
-    for (size_t b = 0; b < marks.brick_count(); ++b)
-        words.insert(words.end(), marks.crossed(b), marks.crossed(b) + octoprox::brick::kWords);
+    for (size_t b = 0; b < marks.brick_count(); ++b) {
+        uint64_t brick[octoprox::brick::kWords];
+        marks.crossed_brick(b, brick);
+        words.insert(words.end(), brick, brick + octoprox::brick::kWords);
+    }
     return words;
 }
 
@@ -104,7 +109,10 @@ void expect_same_setups(const BoundedOcTree &tree, const Rays &rays) {
 void expect_same_lanes(const BoundedOcTree &tree, const Rays &rays) {
     if (!octoprox::cpu_has_avx2()) GTEST_SKIP() << "this processor has no AVX2: only two lanes run";
     expect_same_setups(tree, rays);
-    EXPECT_EQ(walked_words(tree, rays, RayLanes::kTwo), walked_words(tree, rays, RayLanes::kFour));
+    const std::vector<uint64_t> two = walked_words(tree, rays, RayLanes::kTwo, FrameMarks::Layout::kBricks);
+    EXPECT_EQ(two, walked_words(tree, rays, RayLanes::kFour, FrameMarks::Layout::kBricks));
+    EXPECT_EQ(two, walked_words(tree, rays, RayLanes::kTwo, FrameMarks::Layout::kRows));
+    EXPECT_EQ(two, walked_words(tree, rays, RayLanes::kFour, FrameMarks::Layout::kRows));
 }
 
 TEST(RayLanes, RandomRaysMarkTheSameCells) {
