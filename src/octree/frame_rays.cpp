@@ -2,6 +2,7 @@
 // cut ray's end use OctoMap's float arithmetic, unfused.
 #include "octree/frame_rays.hpp"
 
+#include "base/avx2.hpp"
 #include "base/error.hpp"
 #include "base/parallel.hpp"
 #include "broadphase/morton.hpp"
@@ -37,11 +38,8 @@ public:
     bool key(const octomap::point3d &p, octomap::OcTreeKey &out) const {
         for (int axis = 0; axis < 3; ++axis) {
             const double scaled = factor_ * p(axis);
-            // floor(scaled) in [-kHalf, kHalf), without a library call:
-            // truncation, one down for negative non-integers.
             if (!(scaled >= -kHalf && scaled < kHalf)) return false;
-            int cell = static_cast<int>(scaled);
-            cell -= static_cast<double>(cell) > scaled;
+            const int cell = static_cast<int>(std::floor(scaled));
             out[axis] = static_cast<octomap::key_type>(cell + static_cast<int>(kHalf));
         }
         return true;
@@ -129,8 +127,10 @@ void merge_same_cells(std::vector<CellExtent> &extents) {
 }
 
 // The rays of points [begin, end).
-void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
-                  const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
+inline __attribute__((always_inline)) void prepare_points(const KeyMapper &mapper, const PointSource &points,
+                                                           const InsertSettings &settings,
+                                                           const octomap::point3d &origin, size_t begin, size_t end,
+                                                           RayPart &part) {
     const bool limited = settings.max_range > 0.0 && std::isfinite(settings.max_range);
     RaySegment &rays = part.rays;
     InsertCounts &counts = part.counts;
@@ -166,6 +166,23 @@ void prepare_part(const KeyMapper &mapper, const PointSource &points, const Inse
     extents.flush();
     std::sort(part.hit_extents.begin(), part.hit_extents.end(), ByCode());
     merge_same_cells(part.hit_extents);
+}
+
+#if defined(OPX_AVX2_LANES)
+// Compiled for AVX2 too, where a floor is one instruction (SSE4.1's
+// round): the same operations, in fewer instructions.
+OPX_AVX2 void prepare_part_avx2(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
+                                const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
+    prepare_points(mapper, points, settings, origin, begin, end, part);
+}
+#endif
+
+void prepare_part(const KeyMapper &mapper, const PointSource &points, const InsertSettings &settings,
+                  const octomap::point3d &origin, size_t begin, size_t end, RayPart &part) {
+#if defined(OPX_AVX2_LANES)
+    if (cpu_has_avx2()) return prepare_part_avx2(mapper, points, settings, origin, begin, end, part);
+#endif
+    prepare_points(mapper, points, settings, origin, begin, end, part);
 }
 
 template <class T>
