@@ -95,15 +95,32 @@ typedef struct opx_insert_options {
      * not depend on it. */
     uint32_t max_threads;
     uint32_t reserved0;
+    /** Self-filtering (see "The robot in its own frame" below): the robot
+     * at the moment the frame was captured, its link poses as last set
+     * (opx_linkset_set_poses, opx_linkset_set_joint_positions...), attached
+     * objects included.  The call only reads it and keeps no pointer.
+     * NULL (the default): no self-filtering. */
+    const struct opx_linkset *robot;
+    /** Metres added to every link's own padding (the set's and the link's,
+     * opx_linkset_set_padding and opx_linkset_set_link_padding) for the
+     * filter only; >= 0 and finite.  Default 0. */
+    double robot_padding;
+    /** Nonzero: every cell lying entirely inside one of the robot's
+     * unpadded solids becomes free (log-odds set to the free clamp) in the
+     * same update.  Needs `robot`.  Default 0. */
+    uint32_t clear_robot_volume;
+    uint32_t reserved1;
 } opx_insert_options;
 
 #define OPX_INSERT_OPTIONS_INIT \
-    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u}
+    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u, NULL, 0.0, 0u, 0u}
 OPX_API opx_status opx_insert_options_init(opx_insert_options *options, size_t size);
 
 /** What one insert did.  Every point (every pixel of a depth image) is
  * counted once: used + nonfinite + out_of_range + outside_map +
- * pixels_no_return == count (width * height for a depth image). */
+ * points_on_robot + points_shadowed + pixels_no_return == count
+ * (width * height for a depth image).  A point beyond max_range is
+ * counted out of range even when its cut ray meets the robot. */
 typedef struct opx_insert_report {
     uint32_t struct_size;
     uint32_t reserved0;
@@ -116,10 +133,66 @@ typedef struct opx_insert_report {
     /** Depth images: pixels without a depth (0; for float32 also NaN,
      * infinite or negative), skipped.  0 for opx_octree_insert_points. */
     uint64_t pixels_no_return;
+    /** Self-filtering: points inside the padded robot (no occupied cell;
+     * their rays carve up to the robot). */
+    uint64_t points_on_robot;
+    /** Self-filtering: points behind the padded robot (their ray passes
+     * through it first; no occupied cell, carve up to the robot). */
+    uint64_t points_shadowed;
+    /** Cells set free by clear_robot_volume (not in cells_missed). */
+    uint64_t cells_cleared;
 } opx_insert_report;
 
-#define OPX_INSERT_REPORT_INIT {sizeof(opx_insert_report), 0, 0, 0, 0, 0, 0, 0, 0}
+#define OPX_INSERT_REPORT_INIT {sizeof(opx_insert_report), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}
 OPX_API opx_status opx_insert_report_init(opx_insert_report *report, size_t size);
+
+/*
+ * The robot in its own frame (options->robot): a camera on a robot sees
+ * the robot.  Each point of the frame is then one of three kinds, decided
+ * in double precision on the point in the map frame and the sensor origin
+ * (options->sensor_pose's position):
+ *
+ *   robot point: its distance to some link's solid is at most that link's
+ *     padding (the set's plus its own) plus robot_padding, the distance
+ *     being exact for every solid (a point on the band's edge is a robot
+ *     point).  It gives no occupied cell; its ray carves free space from
+ *     the sensor up to where it enters the padded robot, exactly as a ray
+ *     cut at max_range does (the cells before the cut point's cell get a
+ *     miss; that cell and every cell after get nothing).
+ *   shadowed point: not a robot point, but its ray (the segment from the
+ *     sensor origin to the point) passes through the padded robot; it gives
+ *     no occupied cell and its ray carves up to where it enters the robot.
+ *   kept point: every other point, inserted as without a robot, bit for bit
+ *     OctoMap's semantics.  A cell holding a kept point becomes occupied
+ *     even when robot points share it.
+ *
+ * Solids: spheres, boxes, cylinders, capsules and convex hulls exactly; a
+ * closed triangle mesh (every edge shared by exactly two triangles) as the
+ * solid it bounds, so points deep inside a link are robot points; an open
+ * mesh as the convex hull of its vertices.  Padding is exact distance to
+ * the solid, as for queries.  Disabled links filter nothing.
+ *
+ * The cut point: the ray is cut at a point of it from which no point
+ * nearer the sensor lies in the padded robot and whose distance to the
+ * padded robot is at most 1e-9 m (a ray that comes that close to it counts
+ * as passing through it).  A solid whose padded volume holds the sensor
+ * origin (a camera inside its own housing) shadows nothing; a point inside
+ * it is still a robot point, and when no other solid cuts its ray first,
+ * its ray carves nothing.  A point beyond max_range is cut at max_range
+ * and then, where the cut ray meets the robot, where it enters it; it is
+ * counted out of range.
+ *
+ * clear_robot_volume: every finest cell lying entirely inside one of the
+ * unpadded solids (all of its closed cube inside the solid) is set to the
+ * free clamp in the same update, so an obstacle where the arm now stands,
+ * or the arm's own earlier image, does not stay.  Cells only partly inside
+ * are left to the rays.  A cell already at or below the free clamp is left
+ * as it is, as a miss would leave it.
+ *
+ * The map after the call does not depend on max_threads.  Invalid: a link
+ * set whose poses were never set, a robot_padding that is negative, NaN or
+ * infinite, clear_robot_volume without a robot; the map is then unchanged.
+ */
 
 /**
  * Inserts one sensor frame.  Successive frames accumulate log-odds.

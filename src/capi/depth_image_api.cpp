@@ -156,7 +156,7 @@ OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_dep
         if (out_report != nullptr) require_struct_size(out_report->struct_size, "out_report");
         const DepthFrame frame = read_depth_image(image);
         const Pinhole camera = read_intrinsics(intrinsics);
-        const InsertSettings settings = read_insert_options(options);
+        const InsertRequest request = read_insert_options(options);
         opx_insert_report report = OPX_INSERT_REPORT_INIT;
         if (!frame.empty()) {
             uint64_t no_return = 0;
@@ -165,7 +165,7 @@ OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_dep
             source.data = reinterpret_cast<const unsigned char *>(xyz.data());
             source.count = xyz.size() / 3;
             source.stride = 3 * sizeof(float);
-            report = report_from_counts(tree->tree->insert(source, settings));
+            report = report_from_counts(run_insert(*tree->tree, source, request));
             report.pixels_no_return = no_return;
         }
         if (out_report != nullptr) write_versioned(out_report, report, "out_report");

@@ -35,8 +35,18 @@ OctreeParams params_from_options(const opx_octree_options &options);
 opx_octree_options options_from_params(const OctreeParams &params);
 // Caller's options (NULL: defaults) read, versioned and validated.
 OctreeParams read_octree_options(const opx_octree_options *options, const char *argument);
+// An insert's settings and its robot (self-filtering), read from the
+// caller's options.
+struct InsertRequest {
+    InsertSettings settings;
+    const LinkSet *robot = nullptr;  // nullptr: no self-filtering
+    double robot_padding = 0.0;
+    bool clear_robot_volume = false;
+};
 // Caller's insert options (NULL: defaults) read, versioned and validated.
-InsertSettings read_insert_options(const opx_insert_options *options);
+InsertRequest read_insert_options(const opx_insert_options *options);
+// Inserts the points with the request's robot filtered out (insert_robot.cpp).
+InsertCounts run_insert(SensorOctree &tree, const PointSource &points, const InsertRequest &request);
 // The public form of an insert's counts (pixels_no_return 0).
 opx_insert_report report_from_counts(const InsertCounts &counts);
 // A collision request (already versioned) checked and turned into settings.

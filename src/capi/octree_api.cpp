@@ -54,7 +54,29 @@ PointSource read_point_source(const void *points, size_t count, size_t stride, i
 
 }  // namespace
 
-InsertSettings read_insert_options(const opx_insert_options *options) {
+namespace {
+
+// The self-filtering fields: a robot at a known pose, a padding that is a
+// distance, and clearing only with a robot.
+void read_robot_fields(const opx_insert_options &merged, InsertRequest &request) {
+    if (merged.robot != nullptr) {
+        request.robot = &merged.robot->links;
+        if (!request.robot->poses_set())
+            throw_invalid("options.robot has no poses: set them (opx_linkset_set_poses, or a robot's "
+                          "joint positions) to the robot's state when the frame was captured");
+    }
+    if (!(std::isfinite(merged.robot_padding) && merged.robot_padding >= 0.0))
+        throw_invalid(format("options.robot_padding is %g; a padding is a finite distance >= 0 (metres)",
+                             merged.robot_padding));
+    if (merged.clear_robot_volume != 0 && merged.robot == nullptr)
+        throw_invalid("options.clear_robot_volume is set but options.robot is NULL: there is no robot volume to clear");
+    request.robot_padding = merged.robot_padding;
+    request.clear_robot_volume = merged.clear_robot_volume != 0;
+}
+
+}  // namespace
+
+InsertRequest read_insert_options(const opx_insert_options *options) {
     opx_insert_options merged = OPX_INSERT_OPTIONS_INIT;
     read_versioned(options, merged, "options");
     if (merged.mode != OPX_INSERT_RAYCAST && merged.mode != OPX_INSERT_ENDPOINTS)
@@ -62,17 +84,20 @@ InsertSettings read_insert_options(const opx_insert_options *options) {
                              "OPX_INSERT_ENDPOINTS (1)",
                              merged.mode));
     if (std::isnan(merged.max_range)) throw_invalid("options.max_range is NaN");
-    InsertSettings settings;
+    InsertRequest request;
+    InsertSettings &settings = request.settings;
     settings.raycast = merged.mode == OPX_INSERT_RAYCAST;
     settings.sensor_pose = read_pose(merged.sensor_pose, "options.sensor_pose");
     settings.max_range = merged.max_range;
     settings.max_threads = merged.max_threads;
-    return settings;
+    read_robot_fields(merged, request);
+    return request;
 }
 
 opx_insert_report report_from_counts(const InsertCounts &c) {
     return opx_insert_report{sizeof(opx_insert_report), 0, c.used, c.nonfinite, c.out_of_range,
-                             c.outside_map, c.cells_hit, c.cells_missed, 0};
+                             c.outside_map, c.cells_hit, c.cells_missed, 0, c.on_robot, c.shadowed,
+                             c.cells_cleared};
 }
 
 }  // namespace octoprox::capi
@@ -132,8 +157,8 @@ OPX_API opx_status opx_octree_insert_points(opx_octree *tree, const void *points
         require_pointer(tree, "tree");
         if (out_report != nullptr) require_struct_size(out_report->struct_size, "out_report");
         const PointSource source = read_point_source(points, count, stride, scalar_type);
-        const InsertSettings settings = read_insert_options(options);
-        const InsertCounts counts = tree->tree->insert(source, settings);
+        const InsertRequest request = read_insert_options(options);
+        const InsertCounts counts = run_insert(*tree->tree, source, request);
         if (out_report != nullptr) write_versioned(out_report, report_from_counts(counts), "out_report");
         return OPX_OK;
     });

@@ -113,7 +113,7 @@ private:
     static bool all_cells_missed(int depth, const uint64_t *first, const uint64_t *last) {
         if (static_cast<uint64_t>(last - first) != uint64_t{1} << (3 * (kDepth - depth))) return false;
         for (; first != last; ++first)
-            if (FrameCells::is_hit(*first)) return false;
+            if (FrameCells::is_hit(*first) || FrameCells::is_clear(*first)) return false;
         return true;
     }
 
@@ -127,7 +127,7 @@ private:
     }
 
     // OctoMap's early exit: the leaf holding the cell is clamped in the
-    // direction of the cell's update.
+    // direction of the cell's update (a cleared cell's is a miss's).
     bool clamped_for(const BoundedNode *leaf, uint64_t cell) const {
         const float value = leaf->getLogOdds();
         return FrameCells::is_hit(cell) ? value >= clamp_max_ : value <= clamp_min_;
@@ -160,6 +160,11 @@ private:
     void update_leaf(BoundedNode *leaf, bool created, uint64_t cell) {
         const float before = created ? -std::numeric_limits<float>::infinity() : leaf->getLogOdds();
         const bool hit = FrameCells::is_hit(cell);
+        if (FrameCells::is_clear(cell)) {
+            leaf->setLogOdds(clamp_min_);
+            leaf->set_point_extent(0);
+            return;
+        }
         tree_.updateNodeLogOdds(leaf, hit ? hit_ : miss_);
         if (hit) add_points(leaf, kDepth, cell, before);
         else if (!(leaf->getLogOdds() >= occupied_)) leaf->set_point_extent(0);

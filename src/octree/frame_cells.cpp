@@ -209,6 +209,31 @@ FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra, s
     return out;
 }
 
+void add_clear_cells(FrameCells &out, const std::vector<uint64_t> &clear) {
+    if (clear.empty()) return;
+    std::vector<uint64_t> sorted(clear);
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<uint64_t, UninitializedAllocator<uint64_t>> merged;
+    merged.reserve(out.cells.size() + sorted.size());
+    size_t i = 0;
+    for (const uint64_t code : sorted) {
+        for (; i < out.cells.size() && FrameCells::code(out.cells[i]) < code; ++i) merged.push_back(out.cells[i]);
+        const bool same = i < out.cells.size() && FrameCells::code(out.cells[i]) == code;
+        if (same && FrameCells::is_hit(out.cells[i])) {
+            merged.push_back(out.cells[i++]);
+            continue;
+        }
+        if (same) --out.misses, ++i;
+        merged.push_back(code | FrameCells::kClearBit);
+        ++out.cleared;
+        uint32_t key[3];
+        morton_decode(code, key[0], key[1], key[2]);
+        out.box.grow(key);
+    }
+    merged.insert(merged.end(), out.cells.begin() + static_cast<std::ptrdiff_t>(i), out.cells.end());
+    out.cells.swap(merged);
+}
+
 FrameCells sorted_cells(std::vector<uint64_t> cells) {
     FrameCells out;
     merge_extra(out, std::move(cells));

@@ -39,14 +39,17 @@ struct UninitializedAllocator : std::allocator<T> {
 
 struct FrameCells {
     // Morton codes of finest-cell keys (x in bit 0), ascending, each once;
-    // kHitBit set for occupied updates.
+    // kHitBit set for occupied updates, kClearBit for cells set to the
+    // free clamp (self-filtering's robot volume).
     static constexpr uint64_t kHitBit = uint64_t{1} << 63;
+    static constexpr uint64_t kClearBit = uint64_t{1} << 62;
     std::vector<uint64_t, UninitializedAllocator<uint64_t>> cells;
-    uint64_t hits = 0, misses = 0;
+    uint64_t hits = 0, misses = 0, cleared = 0;
     KeyBox box;  // keys of every cell
 
-    static uint64_t code(uint64_t cell) { return cell & ~kHitBit; }
+    static uint64_t code(uint64_t cell) { return cell & ~(kHitBit | kClearBit); }
     static bool is_hit(uint64_t cell) { return (cell & kHitBit) != 0; }
+    static bool is_clear(uint64_t cell) { return (cell & kClearBit) != 0; }
 };
 
 // `extra` holds cells found outside the marks (Morton code, kHitBit for an
@@ -55,5 +58,9 @@ struct FrameCells {
 FrameCells collect_cells(const FrameMarks &marks, std::vector<uint64_t> extra, size_t threads = 1);
 // The same for cells found without marks alone.
 FrameCells sorted_cells(std::vector<uint64_t> cells);
+// Adds cells to set to the free clamp (Morton codes, any order, each
+// once).  Such a cell replaces a miss of the same cell; a hit keeps its
+// cell (no sensed point lies inside the robot).
+void add_clear_cells(FrameCells &cells, const std::vector<uint64_t> &clear);
 
 }  // namespace octoprox

@@ -126,6 +126,19 @@ void merge_same_cells(std::vector<CellExtent> &extents) {
     extents.resize(kept);
 }
 
+Vec3 to_vec(const octomap::point3d &p) { return Vec3(p.x(), p.y(), p.z()); }
+
+// Where the clip cuts the ray to `end` (map frame), rounded to float as
+// OctoMap's points are; `end` itself when the ray is kept.
+octomap::point3d clipped_end(const RayClip &clip, const InsertSettings &settings, const Vec3 &end,
+                             bool end_is_point, RayCut::Kind *kind) {
+    const RayCut cut = clip.cut(end, end_is_point);
+    if (kind != nullptr) *kind = cut.kind;
+    if (cut.kind == RayCut::kKeep) return to_float(end);
+    const Vec3 &origin = settings.sensor_pose.translation;
+    return to_float(origin + cut.t * (end - origin));
+}
+
 // The rays of points [begin, end).
 inline __attribute__((always_inline)) void prepare_points(const KeyMapper &mapper, const PointSource &points,
                                                            const InsertSettings &settings,
@@ -150,10 +163,20 @@ inline __attribute__((always_inline)) void prepare_points(const KeyMapper &mappe
         if (limited && !((p - origin).norm() <= settings.max_range)) {
             ++counts.out_of_range;
             if (!settings.raycast) continue;
-            const octomap::point3d cut = origin + (p - origin).normalized() * static_cast<float>(settings.max_range);
+            octomap::point3d cut = origin + (p - origin).normalized() * static_cast<float>(settings.max_range);
+            if (settings.clip != nullptr) cut = clipped_end(*settings.clip, settings, to_vec(cut), false, nullptr);
             if (!mapper.key(cut, key)) continue;
             add_ray(cut, key, rays, part.box);
             continue;
+        }
+        if (settings.clip != nullptr) {
+            RayCut::Kind kind = RayCut::kKeep;
+            const octomap::point3d cut = clipped_end(*settings.clip, settings, p_map, true, &kind);
+            if (kind != RayCut::kKeep) {
+                ++(kind == RayCut::kOnRobot ? counts.on_robot : counts.shadowed);
+                if (settings.raycast && mapper.key(cut, key)) add_ray(cut, key, rays, part.box);
+                continue;
+            }
         }
         if (!mapper.key(p, key)) {
             ++counts.outside_map;
@@ -265,6 +288,8 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         counts.nonfinite += part.counts.nonfinite;
         counts.out_of_range += part.counts.out_of_range;
         counts.outside_map += part.counts.outside_map;
+        counts.on_robot += part.counts.on_robot;
+        counts.shadowed += part.counts.shadowed;
     }
     return rays;
 }

@@ -144,8 +144,9 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     InsertCounts counts;
     const FrameRays rays =
         prepare_rays(*this, points, settings, task_count(settings.max_threads, points.count / 4096 + 1), counts);
-    const FrameCells cells =
+    FrameCells cells =
         settings.raycast ? raycast_cells(*tree_, rays, settings.max_threads) : endpoint_cells(*tree_, rays);
+    if (settings.clear_cells != nullptr) add_clear_cells(cells, *settings.clear_cells);
     // Everything that may allocate happens above or here: the cell updates
     // below take their nodes from reserved blocks, so a frame goes into the
     // map whole or, out of memory, not at all.  (An empty map's root is made
@@ -161,6 +162,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     grow_known_bounds(cells.box);
     counts.cells_missed = cells.misses;
     counts.cells_hit = cells.hits;
+    counts.cells_cleared = cells.cleared;
     return counts;
 }
 

@@ -9,6 +9,7 @@
 #include "octree/octree_params.hpp"
 #include "octree/obstacle_grid_cache.hpp"
 #include "octree/octree_view.hpp"
+#include "octree/ray_clip.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -47,11 +48,18 @@ struct InsertSettings {
     Pose sensor_pose;
     double max_range = -1.0;  // <= 0 or infinite: no limit
     uint32_t max_threads = 1;  // 0: one per hardware thread
+    // Rays cut short (the robot in its own frame); nullptr: none.  Its
+    // origin is sensor_pose's translation.
+    const RayClip *clip = nullptr;
+    // Finest cells set to the free clamp in the same update (Morton codes
+    // of their keys, any order, each once); nullptr: none.
+    const std::vector<uint64_t> *clear_cells = nullptr;
 };
 
 struct InsertCounts {
     uint64_t used = 0, nonfinite = 0, out_of_range = 0, outside_map = 0;
-    uint64_t cells_hit = 0, cells_missed = 0;
+    uint64_t on_robot = 0, shadowed = 0;
+    uint64_t cells_hit = 0, cells_missed = 0, cells_cleared = 0;
 };
 
 struct CellInfo {

@@ -10,7 +10,7 @@ uint64_t LinkSet::next_identity() {
 }
 
 LinkSet::LinkSet(const LinkSet &other)
-    : pairs_(other.pairs_), padding_(other.padding_), generation_(other.generation_) {
+    : pairs_(other.pairs_), padding_(other.padding_), poses_set_(other.poses_set_), generation_(other.generation_) {
     for (const Link &l : other.links_) {
         Link copy;
         copy.name = l.name, copy.padding = l.padding, copy.enabled = l.enabled, copy.pose = l.pose;
@@ -94,6 +94,7 @@ void LinkSet::set_pair_enabled(uint32_t a, uint32_t b, bool enabled) {
 void LinkSet::set_poses(const std::vector<Pose> &poses) { set_poses(poses, nullptr, 0); }
 
 void LinkSet::set_poses(const std::vector<Pose> &poses, const uint8_t *moved, size_t known) {
+    poses_set_ = true;
     if (!topology_from_poses_) known = 0;  // every link is placed below
     for (uint32_t i = 0; i < links_.size(); ++i) {
         if (i < known ? moved[i] == 0 : topology_from_poses_ && same_pose(links_[i].pose, poses[i])) continue;

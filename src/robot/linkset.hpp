@@ -94,6 +94,9 @@ public:
     size_t link_count() const { return links_.size(); }
     const Link &link(uint32_t index) const { return links_[index]; }
     double padding() const { return padding_; }
+    // Whether set_poses was ever called (a robot's forward kinematics
+    // calls it): self-filtering refuses a robot at no known pose.
+    bool poses_set() const { return poses_set_; }
     // Grows with every change but poses: a copy with the same generation
     // differs from this set only in its poses.
     uint64_t generation() const { return generation_; }
@@ -127,6 +130,7 @@ private:
     std::vector<std::vector<uint32_t>> attached_by_link_;
     LinkPairs pairs_;
     double padding_ = 0.0;
+    bool poses_set_ = false;
     MeshBox mesh_box_ = MeshBox::kTight;
     std::vector<PlacedShape> placed_;
     std::vector<uint32_t> first_placed_;  // per link: its first entry in placed_

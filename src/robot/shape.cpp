@@ -1,6 +1,7 @@
 #include "robot/shape.hpp"
 
 #include "robot/mesh_bounds.hpp"
+#include "robot/mesh_closure.hpp"
 
 namespace octoprox {
 namespace {
@@ -59,6 +60,7 @@ void build_mesh_tree(ShapeDef &def) {
     std::vector<Aabb> boxes;
     triangle_boxes(def.vertices, def.triangles, boxes);
     def.mesh_tree.build(boxes);
+    def.closed = mesh_is_closed(def.triangles);
     // Few vertices: the exact box costs about as much as the frontier's.
     def.bounds = def.vertices.size() > kExactBoxVertices ? box_columns(mesh_frontier_boxes(def.mesh_tree))
                                                          : point_columns(def.vertices);

@@ -40,6 +40,8 @@ struct ShapeDef {
     // Mesh: its shape-frame box (the triangle tree's root box) when the
     // mesh fits it well (kCheapBoxLooseness); else empty.
     Aabb local_box;
+    // Mesh: every edge shared by exactly two triangles (mesh_closure.hpp).
+    bool closed = false;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.

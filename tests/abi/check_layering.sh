@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The library's lower layers stay below the query engines and the C ABI:
 # no file in src/base, src/clouds, src/geometry, src/robot, src/octree,
-# src/broadphase, src/narrowphase or src/world includes a header of
+# src/broadphase, src/narrowphase, src/world or src/self_filter includes a header of
 # src/query or src/capi.
 #   check_layering.sh SOURCE_DIR
 # Exit 0 when none does, 1 with the offending include lines printed, 2 on
@@ -15,7 +15,7 @@ fi
 cd "$1/src" || exit 2
 
 folders=()
-for folder in base clouds geometry robot octree broadphase narrowphase world; do
+for folder in base clouds geometry robot octree broadphase narrowphase world self_filter; do
     [ -d "$folder" ] && folders+=("$folder")
 done
 if [ ${#folders[@]} -eq 0 ]; then

@@ -111,11 +111,15 @@ static void struct_layouts_are_fixed(void **state) {
     assert_int_equal(sizeof(opx_pose), 56);
     assert_int_equal(sizeof(opx_octree_options), 64);
     assert_int_equal(offsetof(opx_octree_options, resolution), 8);
-    assert_int_equal(sizeof(opx_insert_options), 80);
+    assert_int_equal(sizeof(opx_insert_options), 104);
     assert_int_equal(offsetof(opx_insert_options, sensor_pose), 8);
     assert_int_equal(offsetof(opx_insert_options, max_threads), 72);
-    assert_int_equal(sizeof(opx_insert_report), 64);
+    assert_int_equal(offsetof(opx_insert_options, robot), 80);
+    assert_int_equal(offsetof(opx_insert_options, robot_padding), 88);
+    assert_int_equal(offsetof(opx_insert_options, clear_robot_volume), 96);
+    assert_int_equal(sizeof(opx_insert_report), 88);
     assert_int_equal(offsetof(opx_insert_report, pixels_no_return), 56);
+    assert_int_equal(offsetof(opx_insert_report, cells_cleared), 80);
     assert_int_equal(sizeof(opx_depth_image), 48);
     assert_int_equal(offsetof(opx_depth_image, data), 8);
     assert_int_equal(offsetof(opx_depth_image, depth_scale), 40);

@@ -41,19 +41,24 @@ class InsertOptions(Struct):
     the default; 0: one per hardware thread; the map does not depend on
     it)."""
     _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("sensor_pose", Pose),
-                ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32)]
+                ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32),
+                ("robot", c_void_p), ("robot_padding", c_double),
+                ("clear_robot_volume", c_uint32), ("reserved1", c_uint32)]
 
 
 class InsertReport(Struct):
     """What one insert did; every point (or pixel) is counted once:
     points_used + points_nonfinite + points_out_of_range +
-    points_outside_map + pixels_no_return.  cells_hit: cells updated as
-    occupied; cells_missed: as free."""
+    points_outside_map + points_on_robot + points_shadowed +
+    pixels_no_return.  cells_hit: cells updated as occupied; cells_missed:
+    as free; cells_cleared: set free as inside the robot (self-filtering's
+    clear_robot_volume)."""
     _fields_ = [("struct_size", c_uint32), ("reserved0", c_uint32),
                 ("points_used", c_uint64), ("points_nonfinite", c_uint64),
                 ("points_out_of_range", c_uint64), ("points_outside_map", c_uint64),
                 ("cells_hit", c_uint64), ("cells_missed", c_uint64),
-                ("pixels_no_return", c_uint64)]
+                ("pixels_no_return", c_uint64), ("points_on_robot", c_uint64),
+                ("points_shadowed", c_uint64), ("cells_cleared", c_uint64)]
 
 
 class DepthImage(Struct):

@@ -130,8 +130,9 @@ impl InsertOptions {
 
 /// What one insert did.  Every point (every pixel of a depth image) is
 /// counted once: `points_used + points_nonfinite + points_out_of_range +
-/// points_outside_map + pixels_no_return` is the number of points (width x
-/// height of a depth image).
+/// points_outside_map + points_on_robot + points_shadowed +
+/// pixels_no_return` is the number of points (width x height of a depth
+/// image).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct InsertReport {
     /// Points that updated the map.
@@ -148,6 +149,13 @@ pub struct InsertReport {
     pub cells_missed: u64,
     /// Depth-image pixels without a depth, skipped; 0 for points.
     pub pixels_no_return: u64,
+    /// Self-filtering: points inside the padded robot (no occupied cell).
+    pub points_on_robot: u64,
+    /// Self-filtering: points whose ray passes through the padded robot
+    /// first (no occupied cell).
+    pub points_shadowed: u64,
+    /// Self-filtering: cells set free as lying inside the robot.
+    pub cells_cleared: u64,
 }
 
 impl InsertReport {
@@ -160,6 +168,9 @@ impl InsertReport {
             cells_hit: c.cells_hit,
             cells_missed: c.cells_missed,
             pixels_no_return: c.pixels_no_return,
+            points_on_robot: c.points_on_robot,
+            points_shadowed: c.points_shadowed,
+            cells_cleared: c.cells_cleared,
         }
     }
 }

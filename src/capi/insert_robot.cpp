@@ -1,0 +1,25 @@
+// C shims' side of self-filtering: the robot of an insert's options made
+// into the insert's ray clip and, when asked, the cells its volume clears.
+#include "capi/handles.hpp"
+
+#include "self_filter/padded_robot.hpp"
+#include "self_filter/robot_volume.hpp"
+
+#include <optional>
+
+namespace octoprox::capi {
+
+InsertCounts run_insert(SensorOctree &tree, const PointSource &points, const InsertRequest &request) {
+    if (request.robot == nullptr) return tree.insert(points, request.settings);
+    InsertSettings settings = request.settings;
+    const PaddedRobot robot(*request.robot, request.robot_padding, settings.sensor_pose.translation);
+    std::vector<uint64_t> clear;
+    if (request.clear_robot_volume) {
+        clear = robot_volume_cells(robot, tree.params().resolution);
+        settings.clear_cells = &clear;
+    }
+    settings.clip = &robot;
+    return tree.insert(points, settings);
+}
+
+}  // namespace octoprox::capi

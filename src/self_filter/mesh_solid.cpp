@@ -1,0 +1,183 @@
+#include "self_filter/mesh_solid.hpp"
+
+#include "geometry/gjk.hpp"
+#include "self_filter/solid_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace octoprox {
+namespace {
+
+// Relative margin below which a ray's crossing of a triangle is too close
+// to an edge to count: the parity test then tries another direction.
+constexpr double kGrazing = 1e-9;
+
+// Directions tried in turn for the parity test: irregular, so that a
+// mesh's axis-aligned edges and faces are never parallel to them.
+const Vec3 kParityDirections[] = {Vec3(0.5773, 0.5717, 0.5829), Vec3(-0.3121, 0.8267, -0.4683),
+                                  Vec3(0.7016, -0.2087, -0.6813), Vec3(-0.6421, -0.6091, 0.4657)};
+
+// The part [t0, t1] of origin + t * dir (t in [t0, t1]) inside the box;
+// false when empty.
+bool clip_to_box(const Aabb &box, const Vec3 &origin, const Vec3 &dir, double &t0, double &t1) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (dir[axis] == 0.0) {
+            if (origin[axis] < box.lo[axis] || origin[axis] > box.hi[axis]) return false;
+            continue;
+        }
+        const double inv = 1.0 / dir[axis];
+        double a = (box.lo[axis] - origin[axis]) * inv, b = (box.hi[axis] - origin[axis]) * inv;
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a), t1 = std::min(t1, b);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+// Visits the leaves whose box, grown by `margin`, passes `keep`.
+template <class Keep, class Leaf>
+void visit_leaves(const AabbTree &tree, double margin, Keep &&keep, Leaf &&leaf) {
+    if (tree.empty()) return;
+    int32_t stack[64];
+    int depth = 0;
+    stack[depth++] = tree.root();
+    while (depth > 0) {
+        const AabbTreeNode &node = tree.node(stack[--depth]);
+        Aabb box = node.box;
+        box.inflate(margin);
+        if (!keep(box)) continue;
+        if (node.is_leaf()) {
+            leaf(node.item);
+            continue;
+        }
+        if (depth + 2 > 64) {  // deeper than a median-split tree gets: visit the rest directly
+            leaf(-1);
+            continue;
+        }
+        stack[depth++] = node.right;
+        stack[depth++] = node.left;
+    }
+}
+
+// Möller and Trumbore's ray-triangle test.  Returns 1 for a crossing at t
+// > 0, 0 for none, -1 when too close to call.
+int crossing(const Convex &tri, const Vec3 &x, const Vec3 &dir) {
+    const Vec3 e1 = tri.v[1] - tri.v[0], e2 = tri.v[2] - tri.v[0];
+    const Vec3 p = dir.cross(e2);
+    const double det = e1.dot(p);
+    const double scale = e1.norm() * e2.norm();
+    if (std::fabs(det) <= kGrazing * scale) {
+        // In the ray's plane: a crossing only if the ray meets the triangle.
+        return 0;
+    }
+    const double inv = 1.0 / det;
+    const Vec3 s = x - tri.v[0];
+    const double u = s.dot(p) * inv;
+    const Vec3 q = s.cross(e1);
+    const double v = dir.dot(q) * inv;
+    const double t = e2.dot(q) * inv;
+    const double margin = kGrazing;
+    if (u < -margin || v < -margin || u + v > 1.0 + margin || t < -margin) return 0;
+    if (u < margin || v < margin || u + v > 1.0 - margin || t < margin) return -1;
+    return 1;
+}
+
+}  // namespace
+
+bool MeshSolid::near_surface(const Vec3 &x) const {
+    bool found = false;
+    const double r2 = radius_ * radius_;
+    visit_leaves(
+        mesh_.mesh_tree, radius_,
+        [&](const Aabb &box) { return !found && box.squared_distance(Aabb{x, x}) == 0.0; },
+        [&](int32_t item) {
+            if (item < 0) {  // a degenerate tree: every triangle
+                for (size_t i = 0; i < mesh_.def->triangles.size() && !found; ++i) {
+                    const Convex t = mesh_.triangle(static_cast<int32_t>(i));
+                    found = (x - nearest_on_core(t, x)).squaredNorm() <= r2;
+                }
+                return;
+            }
+            const Convex t = mesh_.triangle(item);
+            if ((x - nearest_on_core(t, x)).squaredNorm() <= r2) found = true;
+        });
+    return found;
+}
+
+bool MeshSolid::count_crossings(const Vec3 &x, const Vec3 &dir, int &crossings) const {
+    crossings = 0;
+    bool clear = true;
+    const double far = std::numeric_limits<double>::infinity();
+    visit_leaves(
+        mesh_.mesh_tree, 0.0,
+        [&](const Aabb &box) {
+            double t0 = 0.0, t1 = far;
+            return clear && clip_to_box(box, x, dir, t0, t1);
+        },
+        [&](int32_t item) {
+            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
+            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
+            for (size_t i = first; i < last && clear; ++i) {
+                const int c = crossing(mesh_.triangle(static_cast<int32_t>(i)), x, dir);
+                if (c < 0) clear = false;
+                crossings += c > 0 ? 1 : 0;
+            }
+        });
+    return clear;
+}
+
+bool MeshSolid::inside(const Vec3 &x) const {
+    if (mesh_.mesh_tree.empty() || mesh_.mesh_tree.node(mesh_.mesh_tree.root()).box.squared_distance(Aabb{x, x}) > 0.0)
+        return false;
+    // The first ray that passes clear of every edge and vertex decides;
+    // a point all of whose rays graze one is taken as outside (it would
+    // need four rays each meeting an edge within 1e-9 of its length).
+    for (const Vec3 &dir : kParityDirections) {
+        int crossings = 0;
+        if (count_crossings(x, dir, crossings)) return crossings % 2 == 1;
+    }
+    return false;
+}
+
+double MeshSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
+    double best = -1.0, limit = t_max;
+    visit_leaves(
+        mesh_.mesh_tree, radius_ + kEntryTouch,
+        [&](const Aabb &box) {
+            double t0 = 0.0, t1 = limit;
+            return clip_to_box(box, origin, dir, t0, t1);
+        },
+        [&](int32_t item) {
+            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
+            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
+            for (size_t i = first; i < last; ++i) {
+                const double t = grown_core_entry(mesh_.triangle(static_cast<int32_t>(i)), radius_, origin, dir, limit);
+                if (t >= 0.0) best = t, limit = t;
+            }
+        });
+    return best;
+}
+
+bool MeshSolid::touches_box(const Aabb &box) const {
+    bool touches = false;
+    const Vec3 center = box.center(), half = box.half_extent();
+    visit_leaves(
+        mesh_.mesh_tree, 0.0, [&](const Aabb &node) { return !touches && node.overlaps(box); },
+        [&](int32_t item) {
+            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
+            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
+            for (size_t i = first; i < last && !touches; ++i) {
+                const Convex t = mesh_.triangle(static_cast<int32_t>(i));
+                GjkQuery query;
+                query.cell_center = center, query.cell_half = half, query.shape = &t;
+                query.stop_above = 0.0;
+                const GjkResult result = gjk_cell_distance(query);
+                touches = result.intersecting || result.distance <= 0.0;
+            }
+        });
+    return touches;
+}
+
+}  // namespace octoprox

@@ -1,0 +1,95 @@
+#include "self_filter/padded_robot.hpp"
+
+#include "self_filter/mesh_solid.hpp"
+#include "self_filter/solid_geometry.hpp"
+
+namespace octoprox {
+namespace {
+
+// A ball holding the padded shape: its box's, grown by robot_padding.
+Ball bounding_ball(const PlacedShape &shape, double robot_padding) {
+    return Ball{shape.box.center(), shape.box.half_extent().norm() + robot_padding};
+}
+
+// Whether the segment origin + t * dir, t in [0, t_max], meets the ball.
+bool segment_meets(const Ball &ball, const Vec3 &origin, const Vec3 &dir, double t_max) {
+    const Vec3 to_center = ball.center - origin;
+    const double length2 = dir.squaredNorm();
+    double t = length2 > 0.0 ? to_center.dot(dir) / length2 : 0.0;
+    t = t < 0.0 ? 0.0 : (t > t_max ? t_max : t);
+    return (to_center - t * dir).squaredNorm() <= ball.radius * ball.radius;
+}
+
+FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robot_padding) {
+    FilterSolid solid;
+    solid.shape = &shape;
+    solid.core = shape.core;
+    solid.radius = shape.inflation + robot_padding;
+    const double link_padding = robot.padding() + robot.link(shape.link).padding;
+    solid.solid_radius = std::max(0.0, shape.inflation - link_padding);
+    if (shape.kind == ShapeKind::kMesh) {
+        shape.place_mesh();
+        solid.closed_mesh = shape.def->closed;
+        solid.core.kind = ConvexKind::kHull;
+        solid.core.hull = shape.world_vertices.data();
+        solid.core.hull_count = shape.world_vertices.size();
+    }
+    return solid;
+}
+
+}  // namespace
+
+bool FilterSolid::holds(const Vec3 &x, double grow) const {
+    if (closed_mesh) return MeshSolid(*shape, grow).holds(x);
+    return grown_core_holds(core, grow, x);
+}
+
+double FilterSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
+    if (closed_mesh) return MeshSolid(*shape, radius).entry(origin, dir, t_max);
+    return grown_core_entry(core, radius, origin, dir, t_max);
+}
+
+PaddedRobot::PaddedRobot(const LinkSet &robot, double robot_padding, const Vec3 &origin) : origin_(origin) {
+    for (const PlacedShape &shape : robot.placed()) {
+        if (shape.box.empty()) continue;  // a disabled link's
+        if (shape.kind == ShapeKind::kMesh && shape.def->triangles.empty()) continue;
+        FilterSolid solid = solid_of(shape, robot, robot_padding);
+        solid.holds_origin = solid.holds(origin, solid.radius);
+        solids_.push_back(solid);
+        balls_.push_back(bounding_ball(shape, robot_padding));
+    }
+    bins_.build(origin, balls_);
+}
+
+void PaddedRobot::consider(uint32_t index, const Vec3 &end, const Vec3 &dir, bool end_is_point, double &best_t,
+                           bool &entered, bool &on_robot) const {
+    const FilterSolid &solid = solids_[index];
+    const Ball &ball = balls_[index];
+    if (end_is_point && !on_robot && (end - ball.center).squaredNorm() <= ball.radius * ball.radius)
+        on_robot = solid.holds(end, solid.radius);
+    if (solid.holds_origin || !segment_meets(ball, origin_, dir, best_t)) return;
+    const double t = solid.entry(origin_, dir, best_t);
+    if (t >= 0.0) best_t = t, entered = true;
+}
+
+RayCut PaddedRobot::cut(const Vec3 &end, bool end_is_point) const {
+    const Vec3 dir = end - origin_;
+    RayCut cut;
+    if (solids_.empty() || dir == Vec3::Zero()) {
+        if (end_is_point)  // a point at the sensor: inside the robot only if a solid holds it
+            for (const FilterSolid &solid : solids_)
+                if (solid.holds(end, solid.radius)) return RayCut{RayCut::kOnRobot, 0.0};
+        return cut;
+    }
+    const uint32_t *first, *last;
+    bins_.candidates(dir, first, last);
+    double best_t = 1.0;
+    bool entered = false, on_robot = false;
+    for (; first != last; ++first) consider(*first, end, dir, end_is_point, best_t, entered, on_robot);
+    for (const uint32_t index : bins_.everywhere()) consider(index, end, dir, end_is_point, best_t, entered, on_robot);
+    if (on_robot) return RayCut{RayCut::kOnRobot, entered ? best_t : 0.0};
+    if (entered) return RayCut{RayCut::kShadowed, best_t};
+    return cut;
+}
+
+}  // namespace octoprox

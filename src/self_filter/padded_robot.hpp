@@ -1,0 +1,51 @@
+// The robot at a frame's capture time as the insert's ray clip
+// (octree/ray_clip.hpp): each link shape's solid grown by its padding plus
+// the frame's robot_padding, found from the sensor by direction bins
+// (direction_bins.hpp) and tested exactly (solid_geometry.hpp,
+// mesh_solid.hpp).  The semantics are octree.h's ("The robot in its own
+// frame").
+#pragma once
+
+#include "octree/ray_clip.hpp"
+#include "robot/linkset.hpp"
+#include "self_filter/direction_bins.hpp"
+
+#include <vector>
+
+namespace octoprox {
+
+// One enabled shape's solid.
+struct FilterSolid {
+    const PlacedShape *shape = nullptr;
+    Convex core;               // every solid but a closed mesh (an open mesh: its vertices' hull)
+    bool closed_mesh = false;  // the mesh's triangles bound the solid
+    double radius = 0.0;       // the ball grown onto the core: inflation plus robot_padding
+    double solid_radius = 0.0; // the same without any padding (the unpadded solid)
+    bool holds_origin = false; // the grown solid holds the sensor: it shadows nothing
+
+    // Whether the solid grown by `grow` holds `x`.
+    bool holds(const Vec3 &x, double grow) const;
+    // As grown_core_entry for the padded solid.
+    double entry(const Vec3 &origin, const Vec3 &dir, double t_max) const;
+};
+
+class PaddedRobot final : public RayClip {
+public:
+    // Reads `robot`'s placed shapes (placing its meshes); keeps pointers
+    // into it, so the link set must outlive this and not change.
+    PaddedRobot(const LinkSet &robot, double robot_padding, const Vec3 &origin);
+
+    RayCut cut(const Vec3 &end, bool end_is_point) const override;
+    const std::vector<FilterSolid> &solids() const { return solids_; }
+
+private:
+    void consider(uint32_t index, const Vec3 &end, const Vec3 &dir, bool end_is_point, double &best_t, bool &entered,
+                  bool &on_robot) const;
+
+    Vec3 origin_;
+    std::vector<FilterSolid> solids_;
+    std::vector<Ball> balls_;  // per solid: a ball holding the padded solid
+    DirectionBins bins_;
+};
+
+}  // namespace octoprox
