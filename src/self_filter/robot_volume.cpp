@@ -1,5 +1,6 @@
 #include "self_filter/robot_volume.hpp"
 
+#include "base/error.hpp"
 #include "broadphase/morton.hpp"
 #include "self_filter/mesh_solid.hpp"
 
@@ -24,12 +25,31 @@ bool key_range(double a, double b, double resolution, int64_t &lo, int64_t &hi) 
 
 double corner(int64_t key, double resolution) { return (static_cast<double>(key) - kKeyCenter) * resolution; }
 
-void add_solid_cells(const FilterSolid &solid, double resolution, std::vector<uint64_t> &out) {
+// The keys of the cells meeting the unpadded solid's box; false when none.
+bool solid_keys(const FilterSolid &solid, double resolution, int64_t lo[3], int64_t hi[3]) {
     Aabb box = solid.shape->box;
-    box.inflate(solid.solid_radius - solid.shape->inflation);  // the unpadded solid's
-    int64_t lo[3], hi[3];
+    box.inflate(solid.solid_radius - solid.shape->inflation);
     for (int axis = 0; axis < 3; ++axis)
-        if (!key_range(box.lo[axis], box.hi[axis], resolution, lo[axis], hi[axis])) return;
+        if (!key_range(box.lo[axis], box.hi[axis], resolution, lo[axis], hi[axis])) return false;
+    return true;
+}
+
+void require_bounded_volume(const PaddedRobot &robot, double resolution) {
+    double corners = 0.0;
+    for (const FilterSolid &solid : robot.solids()) {
+        int64_t lo[3], hi[3];
+        if (!solid_keys(solid, resolution, lo, hi)) continue;
+        corners += double(hi[0] - lo[0] + 2) * double(hi[1] - lo[1] + 2) * double(hi[2] - lo[2] + 2);
+    }
+    if (corners > kMaxVolumeCorners)
+        throw_invalid(format("options.clear_robot_volume: the robot's solids span %.3g cell corners at a "
+                             "resolution of %g m, more than the %.3g the clearing tests",
+                             corners, resolution, kMaxVolumeCorners));
+}
+
+void add_solid_cells(const FilterSolid &solid, double resolution, std::vector<uint64_t> &out) {
+    int64_t lo[3], hi[3];
+    if (!solid_keys(solid, resolution, lo, hi)) return;
     // The corners' grid, each corner tested once for the cells around it.
     const int64_t n[3] = {hi[0] - lo[0] + 2, hi[1] - lo[1] + 2, hi[2] - lo[2] + 2};
     std::vector<char> inside(static_cast<size_t>(n[0] * n[1] * n[2]));
@@ -60,6 +80,7 @@ void add_solid_cells(const FilterSolid &solid, double resolution, std::vector<ui
 }  // namespace
 
 std::vector<uint64_t> robot_volume_cells(const PaddedRobot &robot, double resolution) {
+    require_bounded_volume(robot, resolution);
     std::vector<uint64_t> cells;
     for (const FilterSolid &solid : robot.solids()) add_solid_cells(solid, resolution, cells);
     std::sort(cells.begin(), cells.end());

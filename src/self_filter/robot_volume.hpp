@@ -12,8 +12,15 @@
 
 namespace octoprox {
 
+// The most cell corners the solids' boxes may span together (each corner
+// is tested once): a robot many metres wide at a millimetre resolution
+// would take minutes and gigabytes.
+constexpr double kMaxVolumeCorners = double(uint64_t{1} << 26);
+
 // Morton codes of the cells' keys (OctoMap's: key = floor(coordinate /
-// resolution) + 32768 per axis), ascending, each once.
+// resolution) + 32768 per axis), ascending, each once.  Throws
+// ApiError(INVALID_ARGUMENT) naming options.clear_robot_volume when the
+// solids' boxes span more than kMaxVolumeCorners corners.
 std::vector<uint64_t> robot_volume_cells(const PaddedRobot &robot, double resolution);
 
 }  // namespace octoprox

@@ -109,6 +109,42 @@ private:
     opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
 };
 
+// The arm (with its gripper's capsule, hull and mesh) filtered out of a
+// frame, its volume cleared: a failure while the robot's solids, bins or
+// cells are made leaves the map as it was.
+class InsertFiltered : public Attempt {
+public:
+    InsertFiltered() : tree_(load_base_map()), arm_(arm_with_gripper()), cloud_(room_cloud(kFramePoints, 2)) {
+        arm_pose(arm_, 3);
+    }
+    ~InsertFiltered() override {
+        opx_octree_destroy(tree_);
+        opx_linkset_destroy(arm_);
+    }
+    opx_status call() override {
+        opx_insert_options options = sensor_insert_options(OPX_INSERT_RAYCAST);
+        options.robot = arm_;
+        options.robot_padding = 0.03;
+        options.clear_robot_volume = 1;
+        return opx_octree_insert_points(tree_, cloud_.data(), kFramePoints, 0, OPX_SCALAR_FLOAT32, &options,
+                                        &report_);
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override {
+        record_map(record, tree_);
+        record.add("points_used", report_.points_used);
+        record.add("points_on_robot", report_.points_on_robot);
+        record.add("points_shadowed", report_.points_shadowed);
+        record.add("cells_cleared", report_.cells_cleared);
+    }
+
+private:
+    opx_octree *tree_;
+    opx_linkset *arm_;
+    std::vector<float> cloud_;
+    opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
+};
+
 // A 16 x 12 depth frame in millimetres (every seventh pixel without a
 // return) through a pinhole camera at the sensor's pose: a failure while
 // its points are made, or while they go in, leaves the map as it was.
@@ -241,6 +277,7 @@ std::vector<SweepCase> map_and_robot_cases() {
         make_case<InsertFrame>("opx_octree_insert_points endpoints, large frame",
                                {}, OPX_INSERT_ENDPOINTS, kLargeFramePoints),
         make_case<InsertDepthImage>("opx_octree_insert_depth_image", {}),
+        make_case<InsertFiltered>("opx_octree_insert_points self-filtered", {}),
         make_case<SaveImage>("opx_octree_save_memory .bt", {}, OPX_FORMAT_BT),
         make_case<SaveImage>("opx_octree_save_memory .ot", {}, OPX_FORMAT_OT),
         make_case<LoadUrdf>("opx_linkset_load_urdf_string", {kUrdfdomNumbers, kTinyXmlLeak}),

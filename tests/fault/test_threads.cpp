@@ -1,7 +1,8 @@
 // fault_threads: one map and a set of posed link sets shared read-only by
 // N threads (2, 4, 8), each with its own query contexts, each running every
-// query kind that takes const handles on both engines over many poses, and
-// every read of the map and the link sets.  Every thread must answer bit
+// query kind that takes const handles on both engines over many poses,
+// every read of the map and the link sets, and frames self-filtered
+// against the shared link sets into maps of each thread's own.  Every thread must answer bit
 // for bit what one thread alone answers.  The link sets, and two copies of
 // the map (for sphere queries, and for batches of an arm of spheres on two
 // workers each), are made anew for each run and never queried before it,
@@ -201,8 +202,33 @@ void sphere_batch_queries(Record &record, const SharedScene &scene) {
     opx_query_destroy(query);
 }
 
+// Frames self-filtered against the shared arms (whose meshes the first
+// filter places) into maps of this thread's own, on one and two threads.
+void filtered_inserts(Record &record, const SharedScene &scene) {
+    const std::vector<float> cloud = room_cloud(400, 9);
+    const std::vector<unsigned char> image = map_image(scene.tree, OPX_FORMAT_OT);
+    for (size_t i = 0; i < scene.arms.size() && i < 6; ++i) {
+        opx_octree *map = nullptr;
+        record.add("load_memory", opx_octree_load_memory(image.data(), image.size(), nullptr, &map));
+        opx_insert_options options = sensor_insert_options(OPX_INSERT_RAYCAST);
+        options.robot = scene.arms[i];
+        options.robot_padding = 0.03;
+        options.clear_robot_volume = 1;
+        options.max_threads = 1 + static_cast<uint32_t>(i % 2);
+        opx_insert_report report = OPX_INSERT_REPORT_INIT;
+        record.add("insert_points filtered",
+                   opx_octree_insert_points(map, cloud.data(), cloud.size() / 3, 0, OPX_SCALAR_FLOAT32, &options, &report));
+        record.add("points_on_robot", report.points_on_robot);
+        record.add("points_shadowed", report.points_shadowed);
+        record.add("cells_cleared", report.cells_cleared);
+        record_map(record, map);
+        opx_octree_destroy(map);
+    }
+}
+
 Record every_answer(const SharedScene &scene) {
     Record record;
+    filtered_inserts(record, scene);
     sphere_queries(record, scene);
     sphere_batch_queries(record, scene);
     octree_queries(record, scene, OPX_ENGINE_DIRECT);

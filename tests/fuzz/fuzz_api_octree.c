@@ -59,6 +59,19 @@ static void take_insert_options(fuzz_input *in, opx_insert_options *options, dou
         options->max_range = longest;
 }
 
+/* Self-filtering: a robot from a slot (maybe NULL, maybe never posed),
+ * paddings from sensible to NaN and negative, clearing with or without it. */
+static void take_robot_options(fuzz_api *api, opx_insert_options *options) {
+    fuzz_input *in = &api->in;
+    const uint8_t fuzzed = take_u8(in);
+    if (fuzzed & 1) options->robot = take_linkset(api);
+    if (fuzzed & 2) {
+        static const double paddings[] = {0.0, 0.02, 0.5, -0.01, 1e6};
+        options->robot_padding = take_bool(in) ? paddings[take_below(in, 5)] : take_double(in);
+    }
+    if (fuzzed & 4) options->clear_robot_volume = take_bool(in) ? 1u : take_u32(in);
+}
+
 /* Fills count points of `scalar` (4 or 8 bytes) `step` bytes apart. */
 static void fill_points(fuzz_input *in, unsigned char *points, size_t count, size_t step, size_t scalar) {
     for (size_t i = 0; i < count; ++i) {
@@ -90,6 +103,7 @@ void op_octree_insert(fuzz_api *api) {
     if (step >= 3 * scalar) fill_points(in, points, count, step, scalar);
     opx_insert_options options = OPX_INSERT_OPTIONS_INIT;
     take_insert_options(in, &options, resolution_of(tree));
+    take_robot_options(api, &options);
     opx_insert_report report = OPX_INSERT_REPORT_INIT;
     const uint8_t nulls = take_u8(in) < 200 ? 0 : take_u8(in); /* NULLs, a wrong count */
     const opx_status status =
@@ -97,7 +111,8 @@ void op_octree_insert(fuzz_api *api) {
                   stride, scalar_type, (nulls & 4) ? NULL : &options, (nulls & 8) ? NULL : &report);
     if (status == OPX_OK && !(nulls & 8))
         FUZZ_REQUIRE(report.points_used + report.points_nonfinite + report.points_out_of_range +
-                         report.points_outside_map == ((nulls & 2) ? count + 1 : count));
+                         report.points_outside_map + report.points_on_robot + report.points_shadowed ==
+                     ((nulls & 2) ? count + 1 : count));
     free(points);
 }
 
