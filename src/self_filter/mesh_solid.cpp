@@ -1,6 +1,7 @@
 #include "self_filter/mesh_solid.hpp"
 
 #include "geometry/gjk.hpp"
+#include "self_filter/ray_entry.hpp"
 #include "self_filter/solid_geometry.hpp"
 
 #include <algorithm>
@@ -18,23 +19,6 @@ constexpr double kGrazing = 1e-9;
 // mesh's axis-aligned edges and faces are never parallel to them.
 const Vec3 kParityDirections[] = {Vec3(0.5773, 0.5717, 0.5829), Vec3(-0.3121, 0.8267, -0.4683),
                                   Vec3(0.7016, -0.2087, -0.6813), Vec3(-0.6421, -0.6091, 0.4657)};
-
-// The part [t0, t1] of origin + t * dir (t in [t0, t1]) inside the box;
-// false when empty.
-bool clip_to_box(const Aabb &box, const Vec3 &origin, const Vec3 &dir, double &t0, double &t1) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (dir[axis] == 0.0) {
-            if (origin[axis] < box.lo[axis] || origin[axis] > box.hi[axis]) return false;
-            continue;
-        }
-        const double inv = 1.0 / dir[axis];
-        double a = (box.lo[axis] - origin[axis]) * inv, b = (box.hi[axis] - origin[axis]) * inv;
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a), t1 = std::min(t1, b);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
 
 // Visits the leaves whose box, grown by `margin`, passes `keep`.
 template <class Keep, class Leaf>
@@ -114,7 +98,7 @@ bool MeshSolid::count_crossings(const Vec3 &x, const Vec3 &dir, int &crossings) 
         mesh_.mesh_tree, 0.0,
         [&](const Aabb &box) {
             double t0 = 0.0, t1 = far;
-            return clear && clip_to_box(box, x, dir, t0, t1);
+            return clear && segment_in_box(box, x, dir, t0, t1);
         },
         [&](int32_t item) {
             const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
@@ -142,21 +126,39 @@ bool MeshSolid::inside(const Vec3 &x) const {
 }
 
 double MeshSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
+    const AabbTree &tree = mesh_.mesh_tree;
+    if (tree.empty()) return -1.0;
+    const double grown = radius_ + kEntryTouch;
     double best = -1.0, limit = t_max;
-    visit_leaves(
-        mesh_.mesh_tree, radius_ + kEntryTouch,
-        [&](const Aabb &box) {
-            double t0 = 0.0, t1 = limit;
-            return clip_to_box(box, origin, dir, t0, t1);
-        },
-        [&](int32_t item) {
-            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
-            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
-            for (size_t i = first; i < last; ++i) {
-                const double t = grown_core_entry(mesh_.triangle(static_cast<int32_t>(i)), radius_, origin, dir, limit);
-                if (t >= 0.0) best = t, limit = t;
-            }
-        });
+    // Nodes nearer the sensor first, each with the parameter where the ray
+    // enters its grown box: a hit found early shortens the ray for the rest.
+    struct Pending {
+        int32_t node;
+        double t0;
+    };
+    Pending stack[64];
+    int depth = 0;
+    const auto push = [&](int32_t index) {
+        Aabb box = tree.node(index).box;
+        box.inflate(grown);
+        double t0 = 0.0, t1 = limit;
+        if (depth < 64 && segment_in_box(box, origin, dir, t0, t1)) stack[depth++] = Pending{index, t0};
+    };
+    push(tree.root());
+    while (depth > 0) {
+        const Pending next = stack[--depth];
+        if (next.t0 > limit) continue;
+        const AabbTreeNode &node = tree.node(next.node);
+        if (node.is_leaf()) {
+            const double t = closed_form_entry(mesh_.triangle(node.item), grown, origin, dir, limit);
+            if (t >= 0.0) best = t, limit = t;
+            continue;
+        }
+        const int before = depth;
+        push(node.right);
+        push(node.left);
+        if (depth - before == 2 && stack[depth - 1].t0 > stack[depth - 2].t0) std::swap(stack[depth - 1], stack[depth - 2]);
+    }
     return best;
 }
 

@@ -1,6 +1,7 @@
 #include "self_filter/padded_robot.hpp"
 
 #include "self_filter/mesh_solid.hpp"
+#include "self_filter/ray_entry.hpp"
 #include "self_filter/solid_geometry.hpp"
 
 namespace octoprox {
@@ -20,6 +21,25 @@ bool segment_meets(const Ball &ball, const Vec3 &origin, const Vec3 &dir, double
     return (to_center - t * dir).squaredNorm() <= ball.radius * ball.radius;
 }
 
+// The core's box in the frame of core.center and core.axes (every kind
+// but the sphere, whose ball is its box).
+Aabb core_local_box(const PlacedShape &shape) {
+    const ShapeDef &def = *shape.def;
+    switch (def.kind) {
+    case ShapeKind::kSphere: return Aabb();
+    case ShapeKind::kCapsule: return Aabb::from_center(Vec3::Zero(), Vec3(0.0, 0.0, def.half_length));
+    case ShapeKind::kBox: return Aabb::from_center(Vec3::Zero(), def.half_size);
+    case ShapeKind::kCylinder: return Aabb::from_center(Vec3::Zero(), Vec3(def.radius, def.radius, def.half_length));
+    case ShapeKind::kConvex:
+    case ShapeKind::kMesh: {
+        Aabb box;
+        for (const Vec3 &v : def.vertices) box.grow(v);
+        return box;
+    }
+    }
+    return Aabb();
+}
+
 FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robot_padding) {
     FilterSolid solid;
     solid.shape = &shape;
@@ -27,6 +47,8 @@ FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robo
     solid.radius = shape.inflation + robot_padding;
     const double link_padding = robot.padding() + robot.link(shape.link).padding;
     solid.solid_radius = std::max(0.0, shape.inflation - link_padding);
+    solid.local_box = core_local_box(shape);
+    if (!solid.local_box.empty()) solid.local_box.inflate(solid.radius + kEntryTouch);
     if (shape.kind == ShapeKind::kMesh) {
         shape.place_mesh();
         solid.closed_mesh = shape.def->closed;
@@ -39,6 +61,13 @@ FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robo
 
 }  // namespace
 
+bool FilterSolid::may_meet(const Vec3 &origin, const Vec3 &dir, double t_max) const {
+    if (local_box.empty()) return true;
+    const Vec3 o = core.axes.transpose() * (origin - core.center), d = core.axes.transpose() * dir;
+    double t0 = 0.0, t1 = t_max;
+    return segment_in_box(local_box, o, d, t0, t1);
+}
+
 bool FilterSolid::holds(const Vec3 &x, double grow) const {
     if (closed_mesh) return MeshSolid(*shape, grow).holds(x);
     return grown_core_holds(core, grow, x);
@@ -46,6 +75,7 @@ bool FilterSolid::holds(const Vec3 &x, double grow) const {
 
 double FilterSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
     if (closed_mesh) return MeshSolid(*shape, radius).entry(origin, dir, t_max);
+    if (has_closed_form_entry(core)) return closed_form_entry(core, radius + kEntryTouch, origin, dir, t_max);
     return grown_core_entry(core, radius, origin, dir, t_max);
 }
 
@@ -67,7 +97,8 @@ void PaddedRobot::consider(uint32_t index, const Vec3 &end, const Vec3 &dir, boo
     const Ball &ball = balls_[index];
     if (end_is_point && !on_robot && (end - ball.center).squaredNorm() <= ball.radius * ball.radius)
         on_robot = solid.holds(end, solid.radius);
-    if (solid.holds_origin || !segment_meets(ball, origin_, dir, best_t)) return;
+    if (solid.holds_origin || !segment_meets(ball, origin_, dir, best_t) || !solid.may_meet(origin_, dir, best_t))
+        return;
     const double t = solid.entry(origin_, dir, best_t);
     if (t >= 0.0) best_t = t, entered = true;
 }

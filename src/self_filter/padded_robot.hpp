@@ -22,9 +22,14 @@ struct FilterSolid {
     double radius = 0.0;       // the ball grown onto the core: inflation plus robot_padding
     double solid_radius = 0.0; // the same without any padding (the unpadded solid)
     bool holds_origin = false; // the grown solid holds the sensor: it shadows nothing
+    // The core's box in its own frame (core.center, core.axes), grown by
+    // `radius`: a ray that misses it misses the solid.  Empty: not used.
+    Aabb local_box;
 
     // Whether the solid grown by `grow` holds `x`.
     bool holds(const Vec3 &x, double grow) const;
+    // Whether the segment origin + t * dir, t in [0, t_max], meets local_box.
+    bool may_meet(const Vec3 &origin, const Vec3 &dir, double t_max) const;
     // As grown_core_entry for the padded solid.
     double entry(const Vec3 &origin, const Vec3 &dir, double t_max) const;
 };

@@ -5,7 +5,10 @@
 // enters a grown core.
 #pragma once
 
+#include "geometry/aabb.hpp"
 #include "geometry/convex.hpp"
+
+#include <utility>
 
 namespace octoprox {
 
@@ -14,6 +17,23 @@ constexpr double kEntryTouch = 1e-9;
 
 // The point of `core` nearest `x`; `x` itself when the core holds it.
 Vec3 nearest_on_core(const Convex &core, const Vec3 &x);
+
+// Narrows [t0, t1] to the part of origin + t * dir inside the closed box;
+// false when that part is empty.
+inline bool segment_in_box(const Aabb &box, const Vec3 &origin, const Vec3 &dir, double &t0, double &t1) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (dir[axis] == 0.0) {
+            if (origin[axis] < box.lo[axis] || origin[axis] > box.hi[axis]) return false;
+            continue;
+        }
+        const double inv = 1.0 / dir[axis];
+        double a = (box.lo[axis] - origin[axis]) * inv, b = (box.hi[axis] - origin[axis]) * inv;
+        if (a > b) std::swap(a, b);
+        t0 = a > t0 ? a : t0, t1 = b < t1 ? b : t1;
+        if (t0 > t1) return false;
+    }
+    return true;
+}
 
 // Whether the core grown by `radius` holds `x` (its distance to the core
 // is at most `radius`).
