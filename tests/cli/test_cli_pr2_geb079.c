@@ -17,6 +17,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "cli_run.h"
+#include "opx_data_test.h"
 
 #include <octoprox/octoprox.h>
 #include <octoprox/robot.h>
@@ -45,11 +46,8 @@ static void find_data(void) {
     snprintf(g_map, sizeof g_map, "%s/maps/geb079.bt", dir);
     snprintf(g_urdf, sizeof g_urdf, "%s/robots/pr2_description/urdf/robot.xml", dir);
     snprintf(g_package, sizeof g_package, "moveit_resources_pr2_description=%s/robots/pr2_description", dir);
-    if (stat(g_map, &info) != 0 || stat(g_urdf, &info) != 0) {
-        printf("SKIP: %s or %s not found, set OPX_DATA_DIR to the shared data folder\n", g_map, g_urdf);
-        fflush(stdout);
-        exit(77);
-    }
+    if (stat(g_map, &info) != 0) exit_without_data(g_map);
+    if (stat(g_urdf, &info) != 0) exit_without_data(g_urdf);
 }
 
 typedef struct answer {

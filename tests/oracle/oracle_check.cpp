@@ -315,6 +315,12 @@ std::string data_path(const char *relative) {
     const std::string path = root + "/" + relative;
     struct stat info;
     if (root.empty() || stat(path.c_str(), &info) != 0) {
+        const char *required = std::getenv("OPX_REQUIRE_DATA");
+        if (required != nullptr && std::string(required) == "1") {
+            std::printf("FAIL: %s not found and OPX_REQUIRE_DATA=1: the shared data is required\n", path.c_str());
+            std::fflush(stdout);
+            std::exit(1);
+        }
         std::printf("SKIP: %s not found (set OPX_DATA_DIR to the shared data folder)\n", path.c_str());
         return "";
     }

@@ -93,7 +93,8 @@ private:
 };
 
 // The path of a shared data file ($OPX_DATA_DIR, else OPX_DEFAULT_DATA_DIR);
-// "" after printing "SKIP: ..." when it is absent (the test then exits 77).
+// "" after printing "SKIP: ..." when it is absent (the test then exits 77);
+// with OPX_REQUIRE_DATA=1 (CI sets it) absent data fails the test (exit 1).
 std::string data_path(const char *relative);
 
 // An unsigned integer from the environment (e.g. OPX_ORACLE_SEED), else `fallback`.

@@ -56,12 +56,24 @@ std::string data_dir() {
 
 std::string require_data_file(const char *relative) {
     const std::string path = data_dir() + "/" + relative;
-    if (!std::filesystem::exists(path)) {
-        std::printf("SKIP: %s not found, set OPX_DATA_DIR to the shared data folder\n", path.c_str());
-        std::fflush(stdout);
-        std::exit(77);
-    }
+    if (!std::filesystem::exists(path)) exit_without_data(path);
     return path;
+}
+
+bool data_required() {
+    const char *env = std::getenv("OPX_REQUIRE_DATA");
+    return env != nullptr && std::string(env) == "1";
+}
+
+void exit_without_data(const std::string &missing) {
+    if (data_required()) {
+        std::printf("FAIL: %s not found and OPX_REQUIRE_DATA=1: the shared data is required\n", missing.c_str());
+        std::fflush(stdout);
+        std::exit(1);
+    }
+    std::printf("SKIP: %s not found, set OPX_DATA_DIR to the shared data folder\n", missing.c_str());
+    std::fflush(stdout);
+    std::exit(77);
 }
 
 std::string make_temp_dir() {

@@ -23,9 +23,14 @@ namespace real {
 
 // The shared data folder: $OPX_DATA_DIR, else the build's default.
 std::string data_dir();
-// data_dir()/relative, or prints "SKIP: ... not found, set OPX_DATA_DIR"
-// and exits 77 (ctest's "skipped") when the file is absent.
+// data_dir()/relative, or exit_without_data when the file is absent.
 std::string require_data_file(const char *relative);
+// Whether OPX_REQUIRE_DATA=1 (CI sets it): absent data then fails a test.
+bool data_required();
+// Ends a test whose data is absent: prints "SKIP: ..." and exits 77
+// (ctest's "skipped"), or with OPX_REQUIRE_DATA=1 prints "FAIL: ..." and
+// exits 1.
+[[noreturn]] void exit_without_data(const std::string &missing);
 
 // A new empty directory under the system's temporary directory.
 std::string make_temp_dir();

@@ -311,7 +311,7 @@ TEST(BoxTree, Geb079Quality) {
     const std::string path = unit::data_dir() + "/maps/geb079.bt";
     if (!unit::file_exists(path)) {
         g_data_missing = true;
-        GTEST_SKIP() << path << " not found, set OPX_DATA_DIR to the shared data folder";
+        UNIT_SKIP_WITHOUT_DATA(path + " not found, set OPX_DATA_DIR to the shared data folder");
     }
     const auto octree = unit::read_octree(path);
     octoprox::CellBoxes cells;

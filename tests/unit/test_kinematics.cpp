@@ -5,6 +5,7 @@
 // With the shared data, the PR2's FK rate is printed (reported, not
 // asserted).
 #include "alloc_counter.hpp"
+#include "unit_scenes.hpp"
 
 #include "robot/joint_tree.hpp"
 #include "robot/urdf_model.hpp"
@@ -110,7 +111,7 @@ TEST(Kinematics, OrderTowardNeededLinks) {
 TEST(Kinematics, Pr2Rate) {
     const char *env = std::getenv("OPX_DATA_DIR");
     const std::string dir = std::string(env != nullptr ? env : OPX_DEFAULT_DATA_DIR) + "/robots/pr2_description";
-    if (!file_exists(dir + "/urdf/robot.xml")) GTEST_SKIP() << "no PR2 in " << dir;
+    if (!file_exists(dir + "/urdf/robot.xml")) UNIT_SKIP_WITHOUT_DATA("no PR2 in " + dir);
     UrdfInput input;
     std::FILE *f = std::fopen((dir + "/urdf/robot.xml").c_str(), "rb");
     ASSERT_NE(f, nullptr);

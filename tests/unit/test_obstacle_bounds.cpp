@@ -126,7 +126,7 @@ TEST(ObstacleBounds, ReadMapsGetBoxes) {
         EXPECT_GT(check_tree(*read), 0u);
     }
     const std::string geb079 = unit::data_dir() + "/maps/geb079.bt";
-    if (!unit::file_exists(geb079)) GTEST_SKIP() << "no shared data at " << geb079;
+    if (!unit::file_exists(geb079)) UNIT_SKIP_WITHOUT_DATA("no shared data at " + geb079);
     EXPECT_GT(check_tree(*unit::read_octree(geb079)), 1000u);
 }
 

@@ -35,6 +35,11 @@ std::string data_dir() {
 
 bool file_exists(const std::string &path) { return std::ifstream(path).good(); }
 
+bool data_required() {
+    const char *env = std::getenv("OPX_REQUIRE_DATA");
+    return env != nullptr && std::string(env) == "1";
+}
+
 std::vector<Aabb> random_boxes(size_t n, double extent, double max_edge, std::mt19937_64 &rng) {
     std::uniform_real_distribution<double> position(-extent, extent), edge(1e-3 * max_edge, max_edge);
     std::vector<Aabb> boxes;

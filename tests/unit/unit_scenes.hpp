@@ -17,6 +17,21 @@ namespace unit {
 // $OPX_DATA_DIR, else the compile-time default (tests/CMakeLists.txt).
 std::string data_dir();
 bool file_exists(const std::string &path);
+// Whether OPX_REQUIRE_DATA=1 (CI sets it): a test then fails, not skips,
+// when the shared data is absent (UNIT_SKIP_WITHOUT_DATA).
+bool data_required();
+
+}  // namespace unit
+
+// Skips the running gtest for absent shared data, or fails it when the
+// data is required.
+#define UNIT_SKIP_WITHOUT_DATA(message)                                  \
+    do {                                                                 \
+        if (unit::data_required()) FAIL() << (message) << " (OPX_REQUIRE_DATA=1)"; \
+        GTEST_SKIP() << (message);                                       \
+    } while (0)
+
+namespace unit {
 
 // n boxes with centres uniform in [-extent, extent]^3 and edges in
 // (0, max_edge].

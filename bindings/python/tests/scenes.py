@@ -9,6 +9,14 @@ C0 = 0.125
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 
 
+def skip_without_data(case, message):
+    """Skips the running test for absent shared data, or fails it when
+    OPX_REQUIRE_DATA=1 (CI sets it)."""
+    if os.environ.get("OPX_REQUIRE_DATA") == "1":
+        case.fail(f"{message} and OPX_REQUIRE_DATA=1: the shared data is required")
+    case.skipTest(message)
+
+
 def one_cell_map():
     """One occupied cell [0, RES]^3 (p = 0.7); the rest unknown."""
     tree = octoprox.Octree(resolution=RES)

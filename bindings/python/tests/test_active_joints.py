@@ -10,7 +10,7 @@ import numpy as np
 
 import octoprox
 
-from scenes import REPO
+from scenes import REPO, skip_without_data
 from test_batch import scatter_map
 
 ARM_ACTIVE = 8  # j1..j7, finger_l
@@ -179,7 +179,7 @@ class Pr2(unittest.TestCase):
     def setUp(self):
         paths = pr2_paths()
         if paths is None:
-            self.skipTest("the PR2 of the shared data is absent (set OPX_DATA_DIR)")
+            skip_without_data(self, "the PR2 of the shared data is absent (set OPX_DATA_DIR)")
         urdf, srdf, package = paths
         self.load = lambda: octoprox.LinkSet.from_urdf(urdf, package_dirs=[package], srdf=srdf)
 

@@ -13,7 +13,7 @@ import numpy as np
 import octoprox
 from octoprox import io
 
-from scenes import REPO
+from scenes import REPO, skip_without_data
 
 XYZ_RGB = "FIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
 FRAME = "rgbd/frame_20121214T142255.814212"
@@ -150,7 +150,7 @@ class SharedRgbdFrame(unittest.TestCase):
         self.original = os.path.join(data_dir(), FRAME + ".pcd")
         self.binary = os.path.join(data_dir(), FRAME + "_binary.pcd")
         if not (os.path.exists(self.original) and os.path.exists(self.binary)):
-            self.skipTest(f"{self.original} not found: set OPX_DATA_DIR to the shared data folder")
+            skip_without_data(self, f"{self.original} not found: set OPX_DATA_DIR to the shared data folder")
 
     def test_the_compressed_original_equals_its_binary_copy(self):
         original, binary = io.read_pcd(self.original), io.read_pcd(self.binary)

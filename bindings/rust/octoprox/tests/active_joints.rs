@@ -157,7 +157,7 @@ fn pr2_paths() -> Option<(PathBuf, PathBuf, String)> {
     let robot = data.join("robots/pr2_description");
     let urdf = robot.join("urdf/robot.xml");
     if !urdf.exists() {
-        eprintln!("skipped: the PR2 of the shared data is absent (set OPX_DATA_DIR)");
+        common::skip_without_data("the PR2 of the shared data is absent (set OPX_DATA_DIR)");
         return None;
     }
     let package = format!("moveit_resources_pr2_description={}", robot.display());

@@ -1,5 +1,7 @@
 //! read_point_cloud: small PCD (ascii, LZF binary_compressed) and PLY
 //! files written here, the shared RGB-D frame when present, and errors.
+mod common;
+
 use octoprox::{read_point_cloud, CloudEncoding, CloudFormat, ErrorKind};
 use std::path::PathBuf;
 
@@ -67,7 +69,7 @@ fn the_shared_rgbd_frame_when_present() {
     });
     let path = dir.join("rgbd/frame_20121214T142255.814212.pcd");
     if !path.exists() {
-        eprintln!("skipped: {} not found (set OPX_DATA_DIR)", path.display());
+        common::skip_without_data(&format!("{} not found (set OPX_DATA_DIR)", path.display()));
         return;
     }
     let cloud = read_point_cloud(&path).unwrap();

@@ -76,3 +76,12 @@ pub fn scatter_map(seed: u64) -> Octree {
     tree.insert_points(&points[..], &sensor_at(0.0, 0.0, 0.0, InsertMode::Endpoints)).unwrap();
     tree
 }
+
+/// Ends a test whose shared data is absent: a note on stderr (the test
+/// passes as skipped), or a panic when OPX_REQUIRE_DATA=1 (CI sets it).
+pub fn skip_without_data(message: &str) {
+    if std::env::var("OPX_REQUIRE_DATA").map(|v| v == "1").unwrap_or(false) {
+        panic!("{message} and OPX_REQUIRE_DATA=1: the shared data is required");
+    }
+    eprintln!("skipped: {message}");
+}
