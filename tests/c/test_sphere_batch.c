@@ -114,9 +114,11 @@ static void close_scene(sphere_scene *scene) {
     opx_linkset_destroy(scene->arm);
 }
 
-/* Every row of the batch equals its single call; returns the colliding rows. */
-static int check_rows(const sphere_case *c, opx_linkset *arm, const opx_octree *tree, const double *rows) {
-    opx_query *query = new_query_with(c->engine), *single = new_query();
+/* Every row of the batch, asked of `query`, equals its single call;
+ * returns the colliding rows. */
+static int check_rows_on(opx_query *query, const sphere_case *c, opx_linkset *arm, const opx_octree *tree,
+                         const double *rows) {
+    opx_query *single = new_query();
     const opx_batch_request request = batch_request(c);
     uint8_t collided[ROWS];
     assert_ok(opx_query_check_configurations(query, tree, arm, rows, ROWS, ARM_JOINTS, 0, NULL, 0, 0, &request,
@@ -127,6 +129,12 @@ static int check_rows(const sphere_case *c, opx_linkset *arm, const opx_octree *
         hits += collided[i];
     }
     opx_query_destroy(single);
+    return hits;
+}
+
+static int check_rows(const sphere_case *c, opx_linkset *arm, const opx_octree *tree, const double *rows) {
+    opx_query *query = new_query_with(c->engine);
+    const int hits = check_rows_on(query, c, arm, tree, rows);
     opx_query_destroy(query);
     return hits;
 }
@@ -163,17 +171,58 @@ static void equals_single_calls_every_setting(void **state) {
 }
 
 /* The same query checks a map, then the map after another frame. */
+/* A slab of points across the arm's reach, 0.8 to 0.84 m high (map frame). */
+static void insert_slab(opx_octree *tree) {
+    enum { SIDE = 41 };
+    double *xyz = malloc(3 * SIDE * SIDE * 3 * sizeof *xyz);
+    assert_non_null(xyz);
+    size_t n = 0;
+    for (int layer = 0; layer < 3; ++layer)
+        for (int i = 0; i < SIDE; ++i)
+            for (int j = 0; j < SIDE; ++j, ++n) {
+                xyz[3 * n] = -0.6 + 0.03 * i - kSensor[0];
+                xyz[3 * n + 1] = -0.6 + 0.03 * j - kSensor[1];
+                xyz[3 * n + 2] = 0.8 + 0.02 * layer - kSensor[2];
+            }
+    const opx_insert_options endpoints = sensor_at(kSensor[0], kSensor[1], kSensor[2], OPX_INSERT_ENDPOINTS);
+    insert_f64(tree, xyz, n, &endpoints);
+    free(xyz);
+}
+
+/* One query kept across changes of the map (its grid cache and the map's
+ * are both keyed by the map's state): a slab in the arm's reach adds
+ * collisions, a cleared map has none. */
 static void reads_a_changed_map_anew(void **state) {
     (void)state;
     const sphere_case c = {OPX_ENGINE_DIRECT, 1, 0.0, OPX_OBSTACLE_CELLS, 0.0, OPX_UNKNOWN_FREE};
     sphere_scene scene = open_scene(&c, 5, 23, ROWS);
-    const int before = check_rows(&c, scene.arm, scene.tree, scene.rows);
-    const double wall[6] = {-0.5, -0.6, 0.8, 0.6, 0.5, 0.9};
-    const opx_insert_options endpoints = sensor_at(0.0, 0.0, 2.2, OPX_INSERT_ENDPOINTS);
-    insert_f64(scene.tree, wall, 2, &endpoints);
-    assert_true(check_rows(&c, scene.arm, scene.tree, scene.rows) >= before);
+    opx_query *query = new_query_with(c.engine);
+    const int before = check_rows_on(query, &c, scene.arm, scene.tree, scene.rows);
+    insert_slab(scene.tree);
+    const int after = check_rows_on(query, &c, scene.arm, scene.tree, scene.rows);
+    assert_true(after > before);
     assert_ok(opx_octree_clear(scene.tree));
-    assert_int_equal(check_rows(&c, scene.arm, scene.tree, scene.rows), 0);
+    assert_int_equal(check_rows_on(query, &c, scene.arm, scene.tree, scene.rows), 0);
+    opx_query_destroy(query);
+    close_scene(&scene);
+}
+
+/* One map and one query at two occupancy thresholds in turn, the higher
+ * first: each answer is its own threshold's, and the thresholds do differ
+ * on this map.  (The higher threshold's grid sees fewer obstacles, so its
+ * clearances read for the lower one would call colliding spheres clear.) */
+static void one_query_at_two_thresholds(void **state) {
+    (void)state;
+    sphere_case low = {OPX_ENGINE_DIRECT, 1, 0.0, OPX_OBSTACLE_CELLS, 0.55, OPX_UNKNOWN_FREE};
+    sphere_case high = low;
+    high.threshold = 0.8;
+    sphere_scene scene = open_scene(&low, 5, 31, ROWS);
+    opx_query *query = new_query_with(low.engine);
+    const int at_high = check_rows_on(query, &high, scene.arm, scene.tree, scene.rows);
+    const int at_low = check_rows_on(query, &low, scene.arm, scene.tree, scene.rows);
+    assert_true(at_high < at_low);
+    assert_int_equal(check_rows_on(query, &high, scene.arm, scene.tree, scene.rows), at_high);
+    opx_query_destroy(query);
     close_scene(&scene);
 }
 
@@ -223,6 +272,7 @@ int main(void) {
         cmocka_unit_test(equals_single_calls),
         cmocka_unit_test(equals_single_calls_every_setting),
         cmocka_unit_test(reads_a_changed_map_anew),
+        cmocka_unit_test(one_query_at_two_thresholds),
         cmocka_unit_test(arm_with_a_box_answers_the_same),
         cmocka_unit_test(motions_equal_single_calls),
     };

@@ -51,6 +51,11 @@ void SphereRobot::bound_link(LinkSpheres &group) const {
 
 bool SphereRobot::collides(const SensorOctree &tree, const ObstacleGrid *grid, const std::vector<Pose> &link_poses,
                            const SphereSettings &settings) const {
+    // A grid's clearances count its own threshold's obstacles: read for a
+    // lower threshold they would call colliding spheres clear.  As
+    // sphere_collides, use it only for the threshold it was built for.
+    if (grid != nullptr && (settings.unknown_occupied || grid->threshold() != settings.threshold_log_odds))
+        grid = nullptr;
     for (const LinkSpheres &group : links_) {
         const Pose &pose = link_poses[group.link];
         if (grid != nullptr && group.count > 1 && sphere_surely_clear(*grid, pose.apply(group.center), group.radius))
