@@ -1,0 +1,201 @@
+/*
+ * Saves and loads on hostile paths: a save is written to a fresh
+ * temporary and renamed (never through a link planted where a temporary
+ * might be, never leaving one behind), and saves of one path running at
+ * once leave one whole map.  Files go to a folder of the working directory
+ * (ctest: the build directory).
+ */
+#define _POSIX_C_SOURCE 200809L /* fork, symlink */
+#include "opx_test.h"
+
+#include "atomic_file.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define DIR_NAME "c_octree_file_safety.d"
+#define ROUNDS 8
+#define SAVES_PER_ROUND 4
+
+/* DIR_NAME/name, in one of 4 buffers used in turn. */
+static const char *in_dir(const char *name) {
+    static char paths[4][512];
+    static int slot = 0;
+    char *path = paths[slot++ % 4];
+    mkdir(DIR_NAME, 0700);
+    snprintf(path, sizeof paths[0], DIR_NAME "/%s", name);
+    return path;
+}
+
+static byte_buffer read_file(const char *path) {
+    byte_buffer b = {NULL, 0};
+    unsigned char chunk[4096];
+    size_t n;
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        b.data = realloc(b.data, b.size + n);
+        assert_non_null(b.data);
+        memcpy(b.data + b.size, chunk, n);
+        b.size += n;
+    }
+    fclose(f);
+    return b;
+}
+
+static void write_text(const char *path, const char *text) {
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+static int same_bytes(const byte_buffer *a, const byte_buffer *b) {
+    return a->size == b->size && memcmp(a->data, b->data, a->size) == 0;
+}
+
+/* Entries of DIR_NAME whose name starts with ".NAME." (the temporaries of
+ * NAME), or with "NAME." when hidden is 0. */
+static int files_starting(const char *name, int hidden) {
+    char prefix[256];
+    struct dirent *entry;
+    int count = 0;
+    DIR *dir = opendir(DIR_NAME);
+    assert_non_null(dir);
+    snprintf(prefix, sizeof prefix, "%s%s.", hidden ? "." : "", name);
+    while ((entry = readdir(dir)) != NULL)
+        if (strncmp(entry->d_name, prefix, strlen(prefix)) == 0) ++count;
+    closedir(dir);
+    return count;
+}
+
+/* A second map, unlike new_sample_map()'s. */
+static opx_octree *other_map(void) {
+    opx_octree *tree = new_sample_map();
+    insert_one_ray(tree, -3.0, 2.0, 1.0);
+    return tree;
+}
+
+/* A link planted where a predictable temporary would be is neither
+ * followed nor touched, nor is any other file beside the map. */
+static void save_never_writes_through_a_planted_link(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    const char *victim = in_dir("victim.txt");
+    const char *map = in_dir("planted.bt");
+    char link_path[512];
+    write_text(victim, "keep me\n");
+    snprintf(link_path, sizeof link_path, "%s.tmp", map);
+    unlink(link_path);
+    assert_int_equal(symlink("victim.txt", link_path), 0);
+    assert_ok(opx_octree_save_file(tree, map, OPX_FORMAT_AUTO));
+    byte_buffer kept = read_file(victim);
+    assert_int_equal(kept.size, 8);
+    assert_memory_equal(kept.data, "keep me\n", 8);
+    struct stat status;
+    assert_int_equal(lstat(link_path, &status), 0);
+    assert_true(S_ISLNK(status.st_mode));
+    opx_octree *loaded = NULL;
+    assert_ok(opx_octree_load_file(map, NULL, &loaded));
+    assert_int_equal(files_starting("planted.bt", 1), 0);
+    free(kept.data);
+    opx_octree_destroy(loaded);
+    opx_octree_destroy(tree);
+}
+
+/* The helper refuses to create its temporary through a link, dangling or
+ * not: the file the link names is neither made nor changed. */
+static void exclusive_create_refuses_links(void **state) {
+    (void)state;
+    char victim[512], link_path[512], dangling[512], made[512];
+    snprintf(victim, sizeof victim, "%s", in_dir("victim2.txt"));
+    snprintf(link_path, sizeof link_path, "%s", in_dir("link_to_victim"));
+    snprintf(dangling, sizeof dangling, "%s", in_dir("dangling_link"));
+    snprintf(made, sizeof made, "%s", in_dir("made_by_link"));
+    write_text(victim, "keep me\n");
+    unlink(link_path), unlink(dangling), unlink(made);
+    assert_int_equal(symlink("victim2.txt", link_path), 0);
+    assert_int_equal(symlink("made_by_link", dangling), 0);
+    errno = 0;
+    assert_int_equal(atomic_file_create_exclusive(link_path), -1);
+    assert_int_equal(errno, EEXIST);
+    assert_int_equal(atomic_file_create_exclusive(dangling), -1);
+    assert_int_equal(access(made, F_OK), -1);
+    byte_buffer kept = read_file(victim);
+    assert_int_equal(kept.size, 8);
+    free(kept.data);
+}
+
+/* A map given through a link: the file it points to is replaced, the link
+ * stays a link. */
+static void save_through_a_link_keeps_the_link(void **state) {
+    (void)state;
+    opx_octree *first = new_sample_map(), *second = other_map();
+    const char *real = in_dir("real.ot");
+    const char *link_path = in_dir("alias.ot");
+    assert_ok(opx_octree_save_file(first, real, OPX_FORMAT_AUTO));
+    unlink(link_path);
+    assert_int_equal(symlink("real.ot", link_path), 0);
+    assert_ok(opx_octree_save_file(second, link_path, OPX_FORMAT_AUTO));
+    struct stat status;
+    assert_int_equal(lstat(link_path, &status), 0);
+    assert_true(S_ISLNK(status.st_mode));
+    byte_buffer saved = read_file(real), expected = save_to_memory(second, OPX_FORMAT_OT);
+    assert_true(same_bytes(&saved, &expected));
+    assert_int_equal(files_starting("real.ot", 1) + files_starting("alias.ot", 1), 0);
+    free(saved.data), free(expected.data);
+    opx_octree_destroy(first), opx_octree_destroy(second);
+}
+
+static void save_repeatedly(const opx_octree *tree, const char *path) {
+    int i;
+    for (i = 0; i < SAVES_PER_ROUND; ++i)
+        if (opx_octree_save_file(tree, path, OPX_FORMAT_AUTO) != OPX_OK) _exit(1);
+    _exit(0);
+}
+
+/* Two processes saving one path at once: every round ends with a map that
+ * loads and equals one of the two, and no temporary is left. */
+static void concurrent_saves_leave_one_whole_map(void **state) {
+    (void)state;
+    opx_octree *maps[2] = {new_sample_map(), other_map()};
+    byte_buffer images[2] = {save_to_memory(maps[0], OPX_FORMAT_BT), save_to_memory(maps[1], OPX_FORMAT_BT)};
+    const char *path = in_dir("shared.bt");
+    int round, p;
+    assert_false(same_bytes(&images[0], &images[1]));
+    for (round = 0; round < ROUNDS; ++round) {
+        pid_t children[2];
+        for (p = 0; p < 2; ++p) {
+            children[p] = fork();
+            assert_true(children[p] >= 0);
+            if (children[p] == 0) save_repeatedly(maps[p], path);
+        }
+        for (p = 0; p < 2; ++p) {
+            int status = 0;
+            assert_int_equal(waitpid(children[p], &status, 0), children[p]);
+            assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+        }
+        byte_buffer saved = read_file(path);
+        assert_true(same_bytes(&saved, &images[0]) || same_bytes(&saved, &images[1]));
+        opx_octree *loaded = NULL;
+        assert_ok(opx_octree_load_file(path, NULL, &loaded));
+        opx_octree_destroy(loaded);
+        free(saved.data);
+    }
+    assert_int_equal(files_starting("shared.bt", 1), 0);
+    free(images[0].data), free(images[1].data);
+    opx_octree_destroy(maps[0]), opx_octree_destroy(maps[1]);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(save_never_writes_through_a_planted_link),
+        cmocka_unit_test(exclusive_create_refuses_links),
+        cmocka_unit_test(save_through_a_link_keeps_the_link),
+        cmocka_unit_test(concurrent_saves_leave_one_whole_map),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
