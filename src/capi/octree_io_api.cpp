@@ -44,6 +44,14 @@ std::unique_ptr<SensorOctree> read_any_map(const std::string &bytes, const Octre
     return is_octoprox_map(bytes) ? read_octoprox_map_bytes(bytes, params) : read_map_file_bytes(bytes, params);
 }
 
+// A map file's first bytes, holding its whole header (OctoMap's takes a few
+// lines, OctoProx's first line is then followed by an .ot header).
+constexpr size_t kMapHeaderBytes = 65536;
+
+size_t map_size_bound(const std::string &prefix) {
+    return is_octoprox_map(prefix) ? octoprox_map_size_bound(prefix) : map_file_size_bound(prefix);
+}
+
 // Writes the map whole or not at all (base/atomic_file.h): a fresh
 // temporary beside the target, renamed over it; a failed save leaves the
 // previous map and no temporary.
@@ -72,7 +80,8 @@ OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_optio
         require_pointer(out, "out");
         require_pointer(path, "path");
         const OctreeParams params = read_octree_options(options, "options");
-        return hand_out(read_any_map(read_file_bytes(path, "map file"), params), out);
+        const std::string bytes = read_bounded_file_bytes(path, "map file", kMapHeaderBytes, map_size_bound);
+        return hand_out(read_any_map(bytes, params), out);
     });
 }
 

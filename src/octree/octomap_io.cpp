@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 
@@ -173,6 +174,15 @@ std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, Octr
     if (header.size >= 0 && header.size != nodes)
         throw_corrupt(format("header says %lld nodes, the data holds %lld", header.size, nodes));
     return read_map_body(body, header.format, header.resolution, params);
+}
+
+size_t map_file_size_bound(const std::string &prefix) {
+    const Header header = parse_header(prefix);
+    if (header.size < 0) return SIZE_MAX;
+    const size_t node_bytes = header.format == MapFormat::kBinary ? 2 : sizeof(float) + 1;
+    const auto nodes = static_cast<unsigned long long>(header.size);
+    if (nodes > (SIZE_MAX - 1 - header.body_offset) / node_bytes) return SIZE_MAX - 1;  // bounded, if not by memory
+    return header.body_offset + node_bytes * static_cast<size_t>(nodes);
 }
 
 // The header OctoMap writes, but with the resolution in its shortest exact

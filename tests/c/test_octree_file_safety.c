@@ -1,19 +1,23 @@
 /*
  * Saves and loads on hostile paths: a save is written to a fresh
  * temporary and renamed (never through a link planted where a temporary
- * might be, never leaving one behind), and saves of one path running at
- * once leave one whole map.  Files go to a folder of the working directory
- * (ctest: the build directory).
+ * might be, never leaving one behind), saves of one path running at once
+ * leave one whole map, and a load reads no more than the header allows
+ * (endless devices and pipes are refused at once).  Files go to a folder
+ * of the working directory (ctest: the build directory).
  */
-#define _POSIX_C_SOURCE 200809L /* fork, symlink */
+#define _POSIX_C_SOURCE 200809L /* fork, mkfifo, symlink, clock_gettime */
 #include "opx_test.h"
 
 #include "atomic_file.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #define DIR_NAME "c_octree_file_safety.d"
@@ -190,12 +194,91 @@ static void concurrent_saves_leave_one_whole_map(void **state) {
     opx_octree_destroy(maps[0]), opx_octree_destroy(maps[1]);
 }
 
+static double seconds_now(void) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)now.tv_sec + 1e-9 * (double)now.tv_nsec;
+}
+
+/* Devices that never end are refused from their first bytes. */
+static void endless_devices_are_refused_at_once(void **state) {
+    static const char *const devices[2] = {"/dev/zero", "/dev/urandom"};
+    int i;
+    (void)state;
+    for (i = 0; i < 2; ++i) {
+        opx_octree *out = NULL;
+        const double start = seconds_now();
+        expect_failure(OPX_ERROR_CORRUPT, "opx_octree_load_file", NULL, opx_octree_load_file(devices[i], NULL, &out));
+        assert_null(out);
+        if (seconds_now() - start > 1.0) fail_msg("%s took %.2f s to refuse", devices[i], seconds_now() - start);
+    }
+}
+
+/* A regular file longer than its header's node count allows is refused
+ * before its body is read. */
+static void a_body_longer_than_the_header_allows_is_refused(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map();
+    byte_buffer bt = save_to_memory(tree, OPX_FORMAT_BT);
+    const char *path = in_dir("long.bt");
+    FILE *f = fopen(path, "wb");
+    opx_octree *out = NULL;
+    assert_non_null(f);
+    assert_int_equal(fwrite(bt.data, 1, bt.size, f), bt.size);
+    assert_int_equal(fseek(f, 1L << 24, SEEK_CUR), 0); /* a 16 MiB hole */
+    fputc('x', f);
+    assert_int_equal(fclose(f), 0);
+    expect_failure(OPX_ERROR_CORRUPT, "opx_octree_load_file", "header allows",
+                   opx_octree_load_file(path, NULL, &out));
+    assert_null(out);
+    free(bt.data);
+    opx_octree_destroy(tree);
+}
+
+/* Writes a map's header and then zeros into the pipe until the reader
+ * goes away. */
+static void serve_endless_body(const char *fifo, const byte_buffer *map) {
+    static const unsigned char zeros[4096];
+    const int out = open(fifo, O_WRONLY);
+    signal(SIGPIPE, SIG_IGN);
+    if (out < 0 || write(out, map->data, body_offset(map)) < 0) _exit(1);
+    while (write(out, zeros, sizeof zeros) > 0) {
+    }
+    _exit(0);
+}
+
+/* A pipe with a good header and an endless body: read up to the bound,
+ * then refused (the writer is left to see the pipe close). */
+static void an_endless_pipe_is_read_up_to_its_bound(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map(), *out = NULL;
+    byte_buffer bt = save_to_memory(tree, OPX_FORMAT_BT);
+    const char *fifo = in_dir("endless.bt");
+    int status = 0;
+    pid_t writer;
+    unlink(fifo);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    writer = fork();
+    assert_true(writer >= 0);
+    if (writer == 0) serve_endless_body(fifo, &bt);
+    expect_failure(OPX_ERROR_CORRUPT, "opx_octree_load_file", "header allows",
+                   opx_octree_load_file(fifo, NULL, &out));
+    assert_null(out);
+    assert_int_equal(waitpid(writer, &status, 0), writer);
+    unlink(fifo);
+    free(bt.data);
+    opx_octree_destroy(tree);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(save_never_writes_through_a_planted_link),
         cmocka_unit_test(exclusive_create_refuses_links),
         cmocka_unit_test(save_through_a_link_keeps_the_link),
         cmocka_unit_test(concurrent_saves_leave_one_whole_map),
+        cmocka_unit_test(endless_devices_are_refused_at_once),
+        cmocka_unit_test(a_body_longer_than_the_header_allows_is_refused),
+        cmocka_unit_test(an_endless_pipe_is_read_up_to_its_bound),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
