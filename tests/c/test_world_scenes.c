@@ -239,6 +239,16 @@ static void test_yaml_aliases(void **state) {
     EXPECT_YAML(text, OPX_ERROR_CORRUPT, "aliases (*name) repeat more elements than its size allows");
 }
 
+/* Lists nested beyond the YAML reader's limit are refused as such. */
+static void test_yaml_nested_too_deep(void **state) {
+    (void)state;
+    static char text[4096] = OBJECT_HEAD "      primitives: ";
+    for (int i = 0; i < 1000; ++i) strcat(text, "[");
+    for (int i = 0; i < 1000; ++i) strcat(text, "]");
+    strcat(text, "\n");
+    EXPECT_YAML(text, OPX_ERROR_CORRUPT, "line 4", "nested 500 levels deep or more");
+}
+
 /* Names leave the library as C strings: one holding a NUL byte is refused. */
 static void test_names_holding_a_nul_byte(void **state) {
     (void)state;
@@ -275,6 +285,7 @@ int main(void) {
         cmocka_unit_test(test_malformed_yaml),
         cmocka_unit_test(test_yaml_documents),
         cmocka_unit_test(test_yaml_aliases),
+        cmocka_unit_test(test_yaml_nested_too_deep),
         cmocka_unit_test(test_malformed_scene_text),
         cmocka_unit_test(test_names_holding_a_nul_byte),
         cmocka_unit_test(test_malformed_files_name_the_file),
