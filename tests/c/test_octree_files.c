@@ -15,22 +15,6 @@
 #define NOT_NULL_SENTINEL ((opx_octree *)(uintptr_t)0x10)
 #define MISSING_DIR "/nonexistent-octoprox-test-dir"
 
-static byte_buffer read_whole_file(const char *path) {
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    byte_buffer b = {NULL, 0};
-    unsigned char chunk[4096];
-    size_t n;
-    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) {
-        b.data = realloc(b.data, b.size + n);
-        assert_non_null(b.data);
-        memcpy(b.data + b.size, chunk, n);
-        b.size += n;
-    }
-    fclose(f);
-    return b;
-}
-
 static void write_whole_file(const char *path, const unsigned char *data, size_t size) {
     FILE *f = fopen(path, "wb");
     assert_non_null(f);
