@@ -137,6 +137,13 @@ private:
     long long count_ = 0;
 };
 
+// Other tree types (ColorOcTree, ...) hold other node data.
+void require_octree_type(const Header &header) {
+    if (header.format == MapFormat::kFull && header.id != "OcTree")
+        throw ApiError(OPX_ERROR_UNSUPPORTED,
+                       "map type \"" + header.id.substr(0, 40) + "\" is not supported (only OcTree)");
+}
+
 void check_resolution(double resolution) {
     if (!resolution_in_range(resolution))
         throw_corrupt(format("resolution %g is outside %g to %g metres", resolution, kMinResolution,
@@ -165,9 +172,7 @@ std::unique_ptr<SensorOctree> read_map_body(const std::string &body, MapFormat f
 
 std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, OctreeParams params) {
     const Header header = parse_header(bytes);
-    if (header.format == MapFormat::kFull && header.id != "OcTree")
-        throw ApiError(OPX_ERROR_UNSUPPORTED,
-                       "map type \"" + header.id.substr(0, 40) + "\" is not supported (only OcTree)");
+    require_octree_type(header);
     check_resolution(header.resolution);
     const std::string body = bytes.substr(header.body_offset);
     const long long nodes = BodyValidator(body, header.format).validate();
@@ -178,6 +183,7 @@ std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, Octr
 
 size_t map_file_size_bound(const std::string &prefix) {
     const Header header = parse_header(prefix);
+    require_octree_type(header);  // before its nodes are taken for an OcTree's
     if (header.size < 0) return SIZE_MAX;
     const size_t node_bytes = header.format == MapFormat::kBinary ? 2 : sizeof(float) + 1;
     const auto nodes = static_cast<unsigned long long>(header.size);

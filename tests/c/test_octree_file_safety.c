@@ -217,6 +217,25 @@ static void a_body_longer_than_the_header_allows_is_refused(void **state) {
     opx_octree_destroy(tree);
 }
 
+/* A full map of another tree type (a ColorOcTree's nodes are longer than
+ * an OcTree's 5 bytes) is unsupported, not taken as too long. */
+static void another_tree_type_is_unsupported_whatever_its_length(void **state) {
+    (void)state;
+    opx_octree *tree = new_sample_map(), *out = NULL;
+    byte_buffer ot = save_to_memory(tree, OPX_FORMAT_OT);
+    byte_buffer color = replace_header_line(&ot, "id ", "id ColorOcTree");
+    const char *path = in_dir("color.ot");
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(color.data, 1, color.size, f), color.size);
+    for (size_t i = 0; i < color.size; ++i) fputc(0, f); /* three more bytes a node, and more */
+    assert_int_equal(fclose(f), 0);
+    expect_failure(OPX_ERROR_UNSUPPORTED, "opx_octree_load_file", "ColorOcTree", opx_octree_load_file(path, NULL, &out));
+    assert_null(out);
+    free(ot.data), free(color.data);
+    opx_octree_destroy(tree);
+}
+
 /* Writes a map's header and then zeros into the pipe until the reader
  * goes away. */
 static void serve_endless_body(const char *fifo, const byte_buffer *map) {
@@ -261,6 +280,7 @@ int main(void) {
         cmocka_unit_test(endless_devices_are_refused_at_once),
         cmocka_unit_test(a_body_longer_than_the_header_allows_is_refused),
         cmocka_unit_test(an_endless_pipe_is_read_up_to_its_bound),
+        cmocka_unit_test(another_tree_type_is_unsupported_whatever_its_length),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
