@@ -15,6 +15,8 @@
  *   mesh      triangles `indices` over `vertices` (a surface: a cell wholly
  *             inside a closed mesh touches no triangle and is not reported,
  *             as in FCL; use a convex hull for a solid part)
+ * Sizes, vertex coordinates and shape positions are within +-1e6 m (as a
+ * URDF's), so that distances over them stay finite.
  *
  * Padding is a safety margin: a padded shape is the Minkowski sum of the
  * shape with a ball of radius padding (exact rounding, not scaling).  A

@@ -370,7 +370,10 @@ OPX_API opx_status opx_octree_get_leaves(const opx_octree *tree, uint32_t class_
  * map (the same with point extents).  The resolution comes
  * from the file; the other fields of options (may be NULL: defaults) set the
  * probabilities and thresholds.  Corrupt or truncated data gives
- * OPX_ERROR_CORRUPT and no handle (*out = NULL).
+ * OPX_ERROR_CORRUPT and no handle (*out = NULL).  The header is read and
+ * checked first, and the file no further than its node count allows: a
+ * longer file, a device or pipe that does not end (/dev/zero), or one
+ * whose header gives no node count is OPX_ERROR_CORRUPT.
  */
 OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_options *options,
                                         opx_octree **out);
@@ -387,7 +390,16 @@ OPX_API opx_status opx_octree_load_message(const void *data, size_t size, int32_
                                            double resolution, const opx_octree_options *options,
                                            opx_octree **out);
 
-/** Saves to a file; format OPX_FORMAT_AUTO, _BT or _OT. */
+/**
+ * Saves to a file; format OPX_FORMAT_AUTO (by the path's extension), _BT,
+ * _OT or _OPX.  The map is written to a new temporary file beside path
+ * (an unpredictable name, created exclusively, never through a link),
+ * synced and renamed over path, so path holds the old map or the whole
+ * new one, and saves of one path running at once leave the last one
+ * renamed.  A path that is a link replaces the file it points to; one
+ * that is no regular file (a device, a FIFO) is written directly.  On
+ * failure (OPX_ERROR_IO) the temporary is removed and path is untouched.
+ */
 OPX_API opx_status opx_octree_save_file(const opx_octree *tree, const char *path,
                                         int32_t format);
 /**

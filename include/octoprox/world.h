@@ -43,16 +43,19 @@ OPX_API void opx_world_destroy(opx_world *world);
 
 /**
  * Adds an object named `name` (copied) at `pose` (the object frame in the
- * map frame: x y z qx qy qz qw, ROS order; NULL: identity), enabled and
- * without shapes.  *out_object (may be NULL) gets its index.
+ * map frame: x y z qx qy qz qw, ROS order; NULL: identity; a position
+ * within +-1e6 m), enabled and without shapes.  *out_object (may be NULL)
+ * gets its index.
  */
 OPX_API opx_status opx_world_add_object(opx_world *world, const char *name, const opx_pose *pose,
                                         uint32_t *out_object);
 /**
  * Adds a shape to object `object`: shape->pose places it in the OBJECT
  * frame; sizes as in linkset.h (a box's full edges, a cylinder's full
- * length along its z axis).  *out_shape (may be NULL) gets its index
- * within the object.  Meshes get their triangle tree here, once.
+ * length along its z axis), every size and position within +-1e6 m.
+ * *out_shape (may be NULL) gets its index within the object.  Meshes get
+ * their triangle tree here, once; the object's other shapes are not
+ * placed again.
  */
 OPX_API opx_status opx_world_add_shape(opx_world *world, uint32_t object, const opx_shape *shape,
                                        uint32_t *out_shape);

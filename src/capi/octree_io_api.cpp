@@ -1,5 +1,6 @@
 // C shims: loading and saving OctoMap files, memory images and messages.
 #include "capi/checks.hpp"
+#include "base/atomic_file.h"
 #include "base/file_bytes.hpp"
 #include "capi/handles.hpp"
 #include "octree/octomap_io.hpp"
@@ -8,6 +9,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <new>
 
 using namespace octoprox;
 using namespace octoprox::capi;
@@ -42,31 +44,22 @@ std::unique_ptr<SensorOctree> read_any_map(const std::string &bytes, const Octre
     return is_octoprox_map(bytes) ? read_octoprox_map_bytes(bytes, params) : read_map_file_bytes(bytes, params);
 }
 
-// Writes bytes to path; false (with errno set) when any of it is not written.
-bool write_whole_file(const std::string &path, const std::string &bytes) {
-    std::FILE *file = std::fopen(path.c_str(), "wb");
-    if (file == nullptr) return false;
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    const int write_errno = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written) errno = write_errno;
-    return written && closed;
+// A map file's first bytes, holding its whole header (OctoMap's takes a few
+// lines, OctoProx's first line is then followed by an .ot header).
+constexpr size_t kMapHeaderBytes = 65536;
+
+size_t map_size_bound(const std::string &prefix) {
+    return is_octoprox_map(prefix) ? octoprox_map_size_bound(prefix) : map_file_size_bound(prefix);
 }
 
-// Writes next to the target and renames, so a failed save never leaves a
-// half-written map where a good one was, nor the temporary file.
-void write_file_atomically(const char *path, const std::string &bytes) {
-    const std::string temporary = std::string(path) + ".tmp";
-    if (!write_whole_file(temporary, bytes)) {
-        const int error = errno;
-        std::remove(temporary.c_str());
-        throw ApiError(OPX_ERROR_IO, format("cannot write \"%s\": %s", temporary.c_str(), std::strerror(error)));
-    }
-    if (std::rename(temporary.c_str(), path) != 0) {
-        const int error = errno;
-        std::remove(temporary.c_str());
-        throw ApiError(OPX_ERROR_IO, format("cannot rename onto \"%s\": %s", path, std::strerror(error)));
-    }
+// Writes the map whole or not at all (base/atomic_file.h): a fresh
+// temporary beside the target, renamed over it; a failed save leaves the
+// previous map and no temporary.
+void save_map_bytes(const char *path, const std::string &bytes) {
+    if (atomic_file_write(path, bytes.data(), bytes.size()) == 0) return;
+    const int error = errno;
+    if (error == ENOMEM) throw std::bad_alloc();
+    throw ApiError(OPX_ERROR_IO, format("cannot write \"%s\": %s", path, std::strerror(error)));
 }
 
 opx_status hand_out(std::unique_ptr<SensorOctree> tree, opx_octree **out) {
@@ -87,7 +80,8 @@ OPX_API opx_status opx_octree_load_file(const char *path, const opx_octree_optio
         require_pointer(out, "out");
         require_pointer(path, "path");
         const OctreeParams params = read_octree_options(options, "options");
-        return hand_out(read_any_map(read_file_bytes(path, "map file"), params), out);
+        const std::string bytes = read_bounded_file_bytes(path, "map file", kMapHeaderBytes, map_size_bound);
+        return hand_out(read_any_map(bytes, params), out);
     });
 }
 
@@ -124,7 +118,7 @@ OPX_API opx_status opx_octree_save_file(const opx_octree *tree, const char *path
     return guard(__func__, [&] {
         require_pointer(tree, "tree");
         require_pointer(path, "path");
-        write_file_atomically(path, map_bytes(*tree->tree, save_format(format, path)));
+        save_map_bytes(path, map_bytes(*tree->tree, save_format(format, path)));
         return OPX_OK;
     });
 }

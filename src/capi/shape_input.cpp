@@ -1,5 +1,6 @@
 #include "capi/shape_input.hpp"
 
+#include "base/bounds.hpp"
 #include "capi/checks.hpp"
 #include "robot/mesh_vertices.hpp"
 
@@ -18,7 +19,9 @@ std::vector<Vec3> read_vertices(const opx_shape &shape) {
         double xyz[3];
         std::memcpy(xyz, bytes + i * stride, sizeof xyz);
         for (int axis = 0; axis < 3; ++axis)
-            if (!std::isfinite(xyz[axis])) throw_invalid(format("shape->vertices[%zu] is not finite", i));
+            if (!(std::fabs(xyz[axis]) <= kMaxMetres))
+                throw_invalid(format("shape->vertices[%zu] is %g on axis %d; vertices are within +-%g m", i,
+                                     xyz[axis], axis, kMaxMetres));
         vertices[i] = Vec3(xyz[0], xyz[1], xyz[2]);
     }
     return vertices;
@@ -43,8 +46,15 @@ std::vector<std::array<uint32_t, 3>> read_triangles(const opx_shape &shape) {
 }  // namespace
 
 void require_positive(double value, const char *argument) {
-    if (!(value > 0.0) || !std::isfinite(value))
-        throw_invalid(format("%s is %g; a positive length in metres is needed", argument, value));
+    if (!(value > 0.0) || !(value <= kMaxMetres))
+        throw_invalid(format("%s is %g; a positive length of at most %g m is needed", argument, value, kMaxMetres));
+}
+
+void require_position_in_bounds(const Pose &pose, const char *argument) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(std::fabs(pose.translation[axis]) <= kMaxMetres))
+            throw_invalid(format("%s.position[%d] is %g; positions are within +-%g m", argument, axis,
+                                 pose.translation[axis], kMaxMetres));
 }
 
 void require_padding(double value, const char *argument) {
@@ -58,6 +68,7 @@ ShapeDef read_shape(const opx_shape *in) {
     read_versioned(in, shape, "shape");
     ShapeDef def;
     def.local = read_pose(shape.pose, "shape->pose");
+    require_position_in_bounds(def.local, "shape->pose");
     switch (shape.kind) {
     case OPX_SHAPE_SPHERE: require_positive(shape.radius, "shape->radius"); break;
     case OPX_SHAPE_BOX:
@@ -70,7 +81,7 @@ ShapeDef read_shape(const opx_shape *in) {
         break;
     case OPX_SHAPE_CAPSULE:
         require_positive(shape.radius, "shape->radius");
-        require_padding(shape.length, "shape->length");
+        if (shape.length != 0.0) require_positive(shape.length, "shape->length");  // 0: a sphere
         break;
     case OPX_SHAPE_CONVEX: def.vertices = read_vertices(shape); break;
     case OPX_SHAPE_MESH:

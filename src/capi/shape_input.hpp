@@ -10,8 +10,10 @@
 namespace octoprox::capi {
 
 // Throws ApiError (invalid argument) naming `argument` unless value is a
-// positive finite length.
+// positive length of at most kMaxMetres (base/bounds.hpp).
 void require_positive(double value, const char *argument);
+// Throws unless the pose's position is within +-kMaxMetres on every axis.
+void require_position_in_bounds(const Pose &pose, const char *argument);
 // Throws unless value is a finite length >= 0.
 void require_padding(double value, const char *argument);
 

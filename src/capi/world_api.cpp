@@ -64,6 +64,7 @@ OPX_API opx_status opx_world_add_object(opx_world *world, const char *name, cons
         require_pointer(world, "world");
         require_pointer(name, "name");
         const Pose placed = pose == nullptr ? Pose() : read_pose(*pose, "pose");
+        require_position_in_bounds(placed, "pose");
         const uint32_t index = world->world.add_object(name, placed);
         if (out_object != nullptr) *out_object = index;
         return OPX_OK;
@@ -94,7 +95,9 @@ OPX_API opx_status opx_world_set_object_pose(opx_world *world, uint32_t object, 
         require_pointer(world, "world");
         require_object(world, object);
         require_pointer(pose, "pose");
-        world->world.set_object_pose(object, read_pose(*pose, "pose"));
+        const Pose placed = read_pose(*pose, "pose");
+        require_position_in_bounds(placed, "pose");
+        world->world.set_object_pose(object, placed);
         return OPX_OK;
     });
 }

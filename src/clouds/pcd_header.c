@@ -247,9 +247,10 @@ int pcd_point_count(const pcd_header *h, size_t *count, char *error, size_t erro
         return -1;
     }
     if (points > CLOUD_MAX_POINTS) {
+        /* A corrupt header, not a short machine: no file could hold them. */
         cloud_set_error(error, error_size, "WIDTH * HEIGHT = %llu points are more than this machine can hold",
                         (unsigned long long)points);
-        return CLOUD_ERROR_NO_MEMORY;
+        return CLOUD_ERROR_CORRUPT;
     }
     *count = (size_t)points;
     return 0;

@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 
@@ -136,6 +137,13 @@ private:
     long long count_ = 0;
 };
 
+// Other tree types (ColorOcTree, ...) hold other node data.
+void require_octree_type(const Header &header) {
+    if (header.format == MapFormat::kFull && header.id != "OcTree")
+        throw ApiError(OPX_ERROR_UNSUPPORTED,
+                       "map type \"" + header.id.substr(0, 40) + "\" is not supported (only OcTree)");
+}
+
 void check_resolution(double resolution) {
     if (!resolution_in_range(resolution))
         throw_corrupt(format("resolution %g is outside %g to %g metres", resolution, kMinResolution,
@@ -164,15 +172,23 @@ std::unique_ptr<SensorOctree> read_map_body(const std::string &body, MapFormat f
 
 std::unique_ptr<SensorOctree> read_map_file_bytes(const std::string &bytes, OctreeParams params) {
     const Header header = parse_header(bytes);
-    if (header.format == MapFormat::kFull && header.id != "OcTree")
-        throw ApiError(OPX_ERROR_UNSUPPORTED,
-                       "map type \"" + header.id.substr(0, 40) + "\" is not supported (only OcTree)");
+    require_octree_type(header);
     check_resolution(header.resolution);
     const std::string body = bytes.substr(header.body_offset);
     const long long nodes = BodyValidator(body, header.format).validate();
     if (header.size >= 0 && header.size != nodes)
         throw_corrupt(format("header says %lld nodes, the data holds %lld", header.size, nodes));
     return read_map_body(body, header.format, header.resolution, params);
+}
+
+size_t map_file_size_bound(const std::string &prefix) {
+    const Header header = parse_header(prefix);
+    require_octree_type(header);  // before its nodes are taken for an OcTree's
+    if (header.size < 0) return SIZE_MAX;
+    const size_t node_bytes = header.format == MapFormat::kBinary ? 2 : sizeof(float) + 1;
+    const auto nodes = static_cast<unsigned long long>(header.size);
+    if (nodes > (SIZE_MAX - 1 - header.body_offset) / node_bytes) return SIZE_MAX - 1;  // bounded, if not by memory
+    return header.body_offset + node_bytes * static_cast<size_t>(nodes);
 }
 
 // The header OctoMap writes, but with the resolution in its shortest exact

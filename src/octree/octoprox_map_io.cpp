@@ -4,6 +4,7 @@
 #include "octree/octomap_io.hpp"
 #include "octree/point_extent.hpp"
 
+#include <cstdint>
 #include <cstring>
 
 namespace octoprox {
@@ -56,6 +57,17 @@ std::unique_ptr<SensorOctree> read_octoprox_map_bytes(const std::string &bytes, 
     if (!tree->set_leaf_extents(extents))
         throw_corrupt(format("OctoProx map: %zu extents for a map of another leaf count", count));
     return tree;
+}
+
+size_t octoprox_map_size_bound(const std::string &prefix) {
+    if (!is_octoprox_map(prefix)) throw_corrupt("not an OctoProx map (no \"# OctoProx map 1\" line)");
+    size_t at = sizeof kMagic - 1;
+    const size_t ot_size = read_count_line(prefix, at, "ot_bytes");
+    // An .ot node takes 5 bytes, and every extent is a leaf's: at most
+    // ot_size / 5 of them, 4 bytes each, after the "extents" line.
+    constexpr size_t kExtentsLine = sizeof "extents " + 18 + 1;
+    if (ot_size > (SIZE_MAX - 1 - at - kExtentsLine) / 2) return SIZE_MAX - 1;
+    return at + ot_size + kExtentsLine + sizeof(uint32_t) * (ot_size / 5);
 }
 
 std::string write_octoprox_map_bytes(const SensorOctree &tree) {

@@ -18,6 +18,9 @@ namespace octoprox {
 bool is_octoprox_map(const std::string &bytes);
 // Throws ApiError(CORRUPT) on anything but a whole, consistent file.
 std::unique_ptr<SensorOctree> read_octoprox_map_bytes(const std::string &bytes, OctreeParams params);
+// The most bytes a whole .opx file starting with `prefix` can hold, from
+// its "ot_bytes" line.  Throws ApiError(CORRUPT) when that line is not there.
+size_t octoprox_map_size_bound(const std::string &prefix);
 std::string write_octoprox_map_bytes(const SensorOctree &tree);
 
 }  // namespace octoprox

@@ -3,16 +3,18 @@
 // written back in a form every reader parses to the same double.
 #pragma once
 
+#include "base/bounds.hpp"
+
 #include <array>
 #include <string>
 
 namespace octoprox {
 
 // Largest magnitude of a length (origin, box size, radius, mesh scale),
-// an angle (rpy), an axis component, or a mimic multiplier or offset:
-// 1,000 km, far beyond any robot, small enough that a thousand joints of
-// it stay finite.
-constexpr double kMaxUrdfMagnitude = 1e6;
+// an angle (rpy), an axis component, or a mimic multiplier or offset: the
+// library's bound on lengths (base/bounds.hpp), small enough that a
+// thousand joints of it stay finite.
+constexpr double kMaxUrdfMagnitude = kMaxMetres;
 
 using Vec3Text = std::array<double, 3>;
 

@@ -1,5 +1,6 @@
 #include "world/scene_shapes.hpp"
 
+#include "base/bounds.hpp"
 #include "base/error.hpp"
 #include "robot/mesh_vertices.hpp"
 
@@ -9,8 +10,13 @@ namespace octoprox {
 namespace {
 
 void require_length(double value, const char *what, const SceneWhere &where) {
-    if (!(value > 0.0) || !std::isfinite(value))
-        scene_fail(where, format("%s %g is not a positive length in metres", what, value));
+    if (!(value > 0.0) || !(value <= kMaxMetres))
+        scene_fail(where, format("%s %g is not a positive length of at most %g m", what, value, kMaxMetres));
+}
+
+// Finite and within +-kMaxMetres on every axis.
+bool within_bounds(const Vec3 &point) {
+    return std::fabs(point.x()) <= kMaxMetres && std::fabs(point.y()) <= kMaxMetres && std::fabs(point.z()) <= kMaxMetres;
 }
 
 }  // namespace
@@ -45,7 +51,8 @@ ShapeDef scene_mesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t,
                     const SceneWhere &where) {
     if (triangles.empty()) scene_fail(where, "a mesh needs at least one triangle");
     for (size_t i = 0; i < vertices.size(); ++i)
-        if (!vertices[i].allFinite()) scene_fail(where, format("vertex %zu is not finite", i));
+        if (!within_bounds(vertices[i]))
+            scene_fail(where, format("vertex %zu is not finite within +-%g m", i, kMaxMetres));
     for (size_t t = 0; t < triangles.size(); ++t)
         for (uint32_t index : triangles[t])
             if (index >= vertices.size())
@@ -60,7 +67,7 @@ ShapeDef scene_mesh(std::vector<Vec3> vertices, std::vector<std::array<uint32_t,
 }
 
 Pose scene_pose(const Vec3 &position, const std::array<double, 4> &q, const SceneWhere &where) {
-    if (!position.allFinite()) scene_fail(where, "the position is not finite");
+    if (!within_bounds(position)) scene_fail(where, format("the position is not finite within +-%g m", kMaxMetres));
     for (double value : q)
         if (!std::isfinite(value)) scene_fail(where, "the orientation is not finite");
     const double norm2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];

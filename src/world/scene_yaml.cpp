@@ -3,6 +3,7 @@
 #include "base/error.hpp"
 #include "world/scene_shapes.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -329,6 +330,14 @@ std::vector<YamlPiece> split_documents(const std::string &text) {
     scene_fail(at, what + error.msg);
 }
 
+// yaml-cpp refuses lists and maps nested beyond its parser's limit (500
+// levels in Debian's build) with the message "bad file"; say what it is.
+[[noreturn]] void yaml_too_deep(const std::string &source, const YAML::DeepRecursion &error, int first_line) {
+    const SceneWhere at{&source, error.mark.is_null() ? 0 : first_line + error.mark.line + 1, ""};
+    scene_fail(at, format("lists and maps nested %d levels deep or more (the YAML reader's limit)",
+                          error.depth()));
+}
+
 }  // namespace
 
 void read_scene_yaml(const std::string &text, const std::string &source, World &world) {
@@ -340,6 +349,8 @@ void read_scene_yaml(const std::string &text, const std::string &source, World &
         YAML::Node document;
         try {
             document = YAML::Load(piece.text);
+        } catch (const YAML::DeepRecursion &error) {
+            yaml_too_deep(source, error, piece.first_line);
         } catch (const YAML::Exception &error) {
             yaml_fail(source, error, piece.first_line, "not valid YAML: ");
         }

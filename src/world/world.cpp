@@ -16,7 +16,7 @@ uint32_t World::add_shape(uint32_t object, ShapeDef def) {
     WorldObject &o = objects_[object];
     o.shapes.push_back(std::make_unique<ShapeDef>(std::move(def)));
     o.placed.emplace_back();
-    place_object(object);
+    place_one(object, static_cast<uint32_t>(o.shapes.size() - 1));
     changed();
     return static_cast<uint32_t>(o.shapes.size() - 1);
 }
@@ -29,7 +29,7 @@ void World::set_object_pose(uint32_t object, const Pose &pose) {
 
 void World::set_shape_pose(uint32_t object, uint32_t shape, const Pose &local) {
     objects_[object].shapes[shape]->local = local;
-    place_object(object);
+    place_one(object, shape);
     changed();
 }
 
@@ -55,12 +55,15 @@ int64_t World::find_object(const std::string &name) const {
 }
 
 void World::place_object(uint32_t object) {
+    for (uint32_t s = 0; s < objects_[object].shapes.size(); ++s) place_one(object, s);
+}
+
+void World::place_one(uint32_t object, uint32_t shape) {
     WorldObject &o = objects_[object];
-    for (uint32_t s = 0; s < o.shapes.size(); ++s) {
-        PlacedShape &placed = o.placed[s];
-        placed.link = object, placed.shape = s;
-        place_shape(*o.shapes[s], o.pose, 0.0, o.enabled, placed);
-    }
+    PlacedShape &placed = o.placed[shape];
+    placed.link = object, placed.shape = shape;
+    place_shape(*o.shapes[shape], o.pose, 0.0, o.enabled, placed);
+    ++placements_;
 }
 
 void World::changed() {

@@ -63,6 +63,9 @@ public:
     int64_t find_object(const std::string &name) const;
     // Grows with every change (objects, shapes, poses, enabled flags).
     uint64_t generation() const { return generation_; }
+    // Shapes placed so far: adding a shape or setting its pose places that
+    // shape alone, an object's pose or enabled flag each of its shapes.
+    uint64_t placements() const { return placements_; }
 
     const WorldIndex &index() const {
         if (index_stale_.load(std::memory_order_acquire)) rebuild_index();
@@ -71,11 +74,13 @@ public:
 
 private:
     void place_object(uint32_t object);
+    void place_one(uint32_t object, uint32_t shape);
     void changed();
     void rebuild_index() const;  // under index_mutex_
 
     std::vector<WorldObject> objects_;
     uint64_t generation_ = 0;
+    uint64_t placements_ = 0;
     mutable WorldIndex index_;
     mutable std::atomic<bool> index_stale_{false};
     mutable std::mutex index_mutex_;

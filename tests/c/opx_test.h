@@ -248,6 +248,23 @@ typedef struct byte_buffer {
     size_t size;
 } byte_buffer;
 
+/* The bytes of the file at path (the test fails when it cannot be read). */
+static inline byte_buffer read_whole_file(const char *path) {
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    byte_buffer b = {NULL, 0};
+    unsigned char chunk[4096];
+    size_t n;
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        b.data = realloc(b.data, b.size + n);
+        assert_non_null(b.data);
+        memcpy(b.data + b.size, chunk, n);
+        b.size += n;
+    }
+    fclose(f);
+    return b;
+}
+
 static inline byte_buffer save_to_memory(const opx_octree *tree, int32_t format) {
     byte_buffer b = {NULL, 0};
     assert_status(opx_octree_save_memory(tree, format, NULL, 0, &b.size),

@@ -206,6 +206,40 @@ static void test_bad_poses_and_indices(void **state) {
     opx_world_destroy(world);
 }
 
+/* Sizes and positions share the URDF's bound: +-1e6 m. */
+static void test_shapes_beyond_a_thousand_km(void **state) {
+    (void)state;
+    opx_world *world = new_world();
+    const uint32_t object = add_object(world, "post", 0, 0, 0);
+    opx_shape huge = OPX_SHAPE_INIT;
+    huge.kind = OPX_SHAPE_CYLINDER, huge.radius = 1e200, huge.length = 1e200;
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_add_shape", "shape->radius is 1e+200",
+                   opx_world_add_shape(world, object, &huge, NULL));
+    huge.radius = 0.1;
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_add_shape", "shape->length",
+                   opx_world_add_shape(world, object, &huge, NULL));
+    opx_shape far = sphere_shape(0.1);
+    far.pose.position[1] = -2e6;
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_add_shape", "shape->pose.position[1]",
+                   opx_world_add_shape(world, object, &far, NULL));
+    const double vertices[9] = {0, 0, 0, 1, 0, 0, 0, 1e7, 0};
+    const uint32_t indices[3] = {0, 1, 2};
+    opx_shape mesh = OPX_SHAPE_INIT;
+    mesh.kind = OPX_SHAPE_MESH, mesh.vertices = vertices, mesh.vertex_count = 3;
+    mesh.indices = indices, mesh.triangle_count = 1;
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_add_shape", "shape->vertices[2]",
+                   opx_world_add_shape(world, object, &mesh, NULL));
+    const opx_pose far_pose = pose_at(0, 0, 1.5e6);
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_add_object", "pose.position[2]",
+                   opx_world_add_object(world, "far", &far_pose, NULL));
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_world_set_object_pose", "pose.position[2]",
+                   opx_world_set_object_pose(world, object, &far_pose));
+    const opx_shape edge = sphere_shape(1e6);  /* the bound itself is taken */
+    assert_ok(opx_world_add_shape(world, object, &edge, NULL));
+    assert_int_equal(object_count(world), 1);
+    opx_world_destroy(world);
+}
+
 static void test_scene_arguments(void **state) {
     (void)state;
     opx_world *world = NULL;
@@ -231,6 +265,7 @@ int main(void) {
         cmocka_unit_test(test_create_and_destroy),   cmocka_unit_test(test_objects_by_index_and_name),
         cmocka_unit_test(test_shapes_of_every_kind), cmocka_unit_test(test_null_arguments),
         cmocka_unit_test(test_bad_poses_and_indices), cmocka_unit_test(test_scene_arguments),
+        cmocka_unit_test(test_shapes_beyond_a_thousand_km),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

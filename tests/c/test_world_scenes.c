@@ -144,6 +144,13 @@ static void test_malformed_yaml(void **state) {
     EXPECT_YAML(OBJECT_HEAD "      meshes:\n        - vertices: [{x: 0}, {x: 1}, {y: 1}]\n"
                 "          triangles:\n            - vertex_indices: [0, 1, 3]\n",
                 OPX_ERROR_CORRUPT, "line 7", "meshes[0].triangles[0].vertex_indices", "vertex 3");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: 3, dimensions: [1e200, 1e200]}]\n", OPX_ERROR_CORRUPT,
+                "line 4", "cylinder radius 1e+200", "at most 1e+06 m");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: 2, dimensions: [0.1]}]\n      pose: {position: {x: 2e6}}\n",
+                OPX_ERROR_CORRUPT, "line 5", "collision_objects[0].pose", "within +-1e+06 m");
+    EXPECT_YAML(OBJECT_HEAD "      meshes:\n        - vertices: [{x: 0}, {x: 1}, {y: -1e7}]\n"
+                "          triangles:\n            - vertex_indices: [0, 1, 2]\n",
+                OPX_ERROR_CORRUPT, "meshes[0]", "vertex 2");
     EXPECT_YAML(OBJECT_HEAD "      planes:\n        - coef: [0, 0, 1, 0]\n", OPX_ERROR_UNSUPPORTED, "line 5", "planes");
     EXPECT_YAML(OBJECT_HEAD "      operation: 3\n", OPX_ERROR_CORRUPT, "line 3", "MOVE", "'post'");
     EXPECT_YAML(OBJECT_HEAD "      operation: 7\n", OPX_ERROR_CORRUPT, "line 4", "operation");
@@ -195,6 +202,10 @@ static void test_malformed_scene_text(void **state) {
                 OPX_ERROR_CORRUPT, "(mesh)", "vertex 5");
     EXPECT_TEXT(TEXT_HEAD "sphere\n0.1\n0 0 nan\n0 0 0 1\n0 0 0 0\n0\n.\n", OPX_ERROR_CORRUPT, "line 9",
                 "shape 0 pose", "not finite");
+    EXPECT_TEXT(TEXT_HEAD "sphere\n1e200\n0 0 0\n0 0 0 1\n0 0 0 0\n0\n.\n", OPX_ERROR_CORRUPT, "sphere radius 1e+200",
+                "at most 1e+06 m");
+    EXPECT_TEXT("scene\n* post\n0 0 -3e6\n0 0 0 1\n1\nsphere\n0.1\n0 0 0\n0 0 0 1\n0 0 0 0\n0\n.\n",
+                OPX_ERROR_CORRUPT, "object 'post' pose", "within +-1e+06 m");
     EXPECT_TEXT("scene\n+ post\n", OPX_ERROR_CORRUPT, "line 2", "'+'");
     EXPECT_TEXT("scene\n* post\n0 0 0\n0 0 0 1\n-1\n", OPX_ERROR_CORRUPT, "line 5", "shape count", "'-1'");
 }
@@ -226,6 +237,16 @@ static void test_yaml_aliases(void **state) {
     strncat(text, "  - &o {id: a, operation: 2, meshes: *M}\nworld:\n  collision_objects: ", sizeof text - strlen(text) - 1);
     append_aliases(text, sizeof text, "o", 20);
     EXPECT_YAML(text, OPX_ERROR_CORRUPT, "aliases (*name) repeat more elements than its size allows");
+}
+
+/* Lists nested beyond the YAML reader's limit are refused as such. */
+static void test_yaml_nested_too_deep(void **state) {
+    (void)state;
+    static char text[4096] = OBJECT_HEAD "      primitives: ";
+    for (int i = 0; i < 1000; ++i) strcat(text, "[");
+    for (int i = 0; i < 1000; ++i) strcat(text, "]");
+    strcat(text, "\n");
+    EXPECT_YAML(text, OPX_ERROR_CORRUPT, "line 4", "nested 500 levels deep or more");
 }
 
 /* Names leave the library as C strings: one holding a NUL byte is refused. */
@@ -264,6 +285,7 @@ int main(void) {
         cmocka_unit_test(test_malformed_yaml),
         cmocka_unit_test(test_yaml_documents),
         cmocka_unit_test(test_yaml_aliases),
+        cmocka_unit_test(test_yaml_nested_too_deep),
         cmocka_unit_test(test_malformed_scene_text),
         cmocka_unit_test(test_names_holding_a_nul_byte),
         cmocka_unit_test(test_malformed_files_name_the_file),

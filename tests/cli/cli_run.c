@@ -3,6 +3,7 @@
 
 #include "cli_run.h"
 
+#include <dirent.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -28,6 +29,16 @@ const char *scratch_path(const char *name) {
     char *path = paths[slot++ % 4];
     snprintf(path, 512, "%s/%s", scratch_dir(), name);
     return path;
+}
+
+int scratch_files_starting(const char *prefix) {
+    DIR *dir = opendir(scratch_dir());
+    struct dirent *entry;
+    int count = 0;
+    if (dir == NULL) fail_msg("cannot list %s", scratch_dir());
+    while ((entry = readdir(dir)) != NULL) count += strncmp(entry->d_name, prefix, strlen(prefix)) == 0;
+    closedir(dir);
+    return count;
 }
 
 const char *write_bytes(const char *name, const void *bytes, size_t size) {

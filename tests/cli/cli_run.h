@@ -22,6 +22,10 @@ const char *scratch_path(const char *name);
 const char *write_text(const char *name, const char *text);
 const char *write_bytes(const char *name, const void *bytes, size_t size);
 
+/* Entries of scratch_dir() whose name starts with prefix (temporaries
+ * such as ".NAME." left behind). */
+int scratch_files_starting(const char *prefix);
+
 /* Runs the tool with `arguments` (a shell command tail, format string). */
 void run_cli(cli_result *r, const char *arguments_format, ...)
 #if defined(__GNUC__)

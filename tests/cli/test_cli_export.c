@@ -4,11 +4,12 @@
  * (a box: 8 vertices, 12 triangles; a sphere: 144 and 256), and marks the
  * colliding link (OBJ group colliding_<link>, red PLY vertices).
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* mknod, symlink */
 
 #include "cli_run.h"
 #include "cli_scene.h"
 
+#include <errno.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -162,12 +165,88 @@ static void meshes_past_the_file_size_limit_exit_3(void **state) {
     }
 }
 
+/* The bytes of a file, in a static buffer of 1 MiB (NUL-terminated). */
+static const char *file_text(const char *path) {
+    static char text[1 << 20];
+    FILE *file = fopen(path, "rb");
+    size_t n;
+    assert_non_null(file);
+    n = fread(text, 1, sizeof text - 1, file);
+    text[n] = '\0';
+    fclose(file);
+    return text;
+}
+
+/* A failed export to a device (a private copy of /dev/full, made where
+ * mknod is allowed) keeps the device node and makes no material file. */
+static void a_failed_export_keeps_the_device(void **state) {
+    static cli_result r;
+    char device[512], mtl[600];
+    struct stat info;
+    (void)state;
+    snprintf(device, sizeof device, "%s", scratch_path("full"));
+    snprintf(mtl, sizeof mtl, "%s.mtl", device);
+    if (mknod(device, S_IFCHR | 0600, makedev(1, 7)) != 0) {
+        print_message("no device node (mknod: %s): device case skipped\n", strerror(errno));
+        return;
+    }
+    run_cli(&r, "export '%s' --obj '%s'", scene_map(), device);
+    if (r.code != 3) fail_msg("export to a full device exited %d, not 3; stderr: %s", r.code, r.err);
+    assert_int_equal(stat(device, &info), 0);
+    assert_true(S_ISCHR(info.st_mode));
+    assert_int_equal(file_size(mtl), -1);
+    run_cli(&r, "export '%s' --ply '%s'", scene_map(), device);
+    assert_int_equal(r.code, 3);
+    assert_int_equal(stat(device, &info), 0);
+    assert_true(S_ISCHR(info.st_mode));
+    unlink(device);
+}
+
+/* A failed export (past ulimit -f) keeps the mesh written before, its
+ * material file, and an output given as a link; no temporary is left. */
+static void a_failed_export_keeps_the_previous_mesh_and_the_link(void **state) {
+    static cli_result r;
+    static char before[1 << 20], mtl_before[1 << 20];
+    char mesh[512], mtl[600], link[512];
+    struct stat info;
+    (void)state;
+    snprintf(mesh, sizeof mesh, "%s", scratch_path("kept.obj"));
+    snprintf(mtl, sizeof mtl, "%s.mtl", mesh);
+    snprintf(link, sizeof link, "%s", scratch_path("alias.obj"));
+    run_cli(&r, "export '%s' --obj '%s'", scene_map(), mesh);
+    assert_int_equal(r.code, 0);
+    snprintf(before, sizeof before, "%s", file_text(mesh));
+    snprintf(mtl_before, sizeof mtl_before, "%s", file_text(mtl));
+    run_cli_file_limit(&r, 1, "export '%s' --obj '%s' --urdf '%s'", scene_map(), mesh, scene_urdf());
+    if (r.code != 3) fail_msg("export under ulimit -f 1 exited %d, not 3; stderr: %s", r.code, r.err);
+    assert_string_equal(file_text(mesh), before);
+    assert_string_equal(file_text(mtl), mtl_before);
+
+    unlink(link);
+    assert_int_equal(symlink("kept.obj", link), 0);
+    run_cli_file_limit(&r, 1, "export '%s' --obj '%s' --urdf '%s'", scene_map(), link, scene_urdf());
+    assert_int_equal(r.code, 3);
+    assert_int_equal(lstat(link, &info), 0);
+    assert_true(S_ISLNK(info.st_mode));
+    assert_string_equal(file_text(mesh), before);
+    /* A good export through the link replaces the file it points to. */
+    run_cli(&r, "export '%s' --obj '%s' --urdf '%s'", scene_map(), link, scene_urdf());
+    assert_int_equal(r.code, 0);
+    assert_int_equal(lstat(link, &info), 0);
+    assert_true(S_ISLNK(info.st_mode));
+    assert_true(count_lines_with_prefix(mesh, "g link_tool") == 1);
+    assert_int_equal(scratch_files_starting(".kept.obj."), 0);
+    assert_int_equal(scratch_files_starting(".alias.obj."), 0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(obj_holds_every_cell_and_the_robot),
         cmocka_unit_test(ply_holds_cubes_or_points_and_red_colliding_links),
         cmocka_unit_test(bad_exports_exit_2_or_3),
         cmocka_unit_test(meshes_past_the_file_size_limit_exit_3),
+        cmocka_unit_test(a_failed_export_keeps_the_device),
+        cmocka_unit_test(a_failed_export_keeps_the_previous_mesh_and_the_link),
     };
     return cmocka_run_group_tests_name("cli_export", tests, NULL, NULL);
 }

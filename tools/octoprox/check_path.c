@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "path_csv.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 /* The path as rows of every joint (model order): the robot's current
@@ -29,6 +30,27 @@ static int fill_rows(const check_context *c, const opx_linkset *links, const pat
                             c->path_file, opx_last_error());
         for (w = 0; w < csv->waypoint_count; ++w)
             rows->values[w * count + joint] = csv->values[w * csv->joint_count + j];
+    }
+    return -1;
+}
+
+/* opx_query_check_motions checks at most this many steps a motion
+ * (include/octoprox/batch.h). */
+#define MAX_MOTION_STEPS 1e7
+
+/* A --resolution that cuts some motion into more steps than are checked
+ * is a usage error (exit 2), found before any query runs. */
+static int check_resolution(const check_context *c, const path_csv *csv, const path_rows *rows) {
+    size_t m, j;
+    for (m = 0; m + 1 < csv->waypoint_count; ++m) {
+        const double *start = rows->values + m * rows->joint_count, *goal = start + rows->joint_count;
+        double largest = 0.0;
+        for (j = 0; j < rows->joint_count; ++j)
+            if (fabs(goal[j] - start[j]) > largest) largest = fabs(goal[j] - start[j]);
+        if (largest / c->resolution > MAX_MOTION_STEPS)
+            return cli_usage("check", "--resolution %g cuts motion %zu (a joint moves %g) into %.3g steps; at most "
+                             "%g steps a motion are checked", c->resolution, m, largest, ceil(largest / c->resolution),
+                             MAX_MOTION_STEPS);
     }
     return -1;
 }
@@ -131,7 +153,8 @@ static int check_rows(check_context *c, opx_linkset *links, const path_csv *csv,
                       int *collided) {
     opx_path_result result = OPX_PATH_RESULT_INIT;
     check_motions_report motions = {0, -1, -1.0};
-    int code = check_waypoints(c, links, csv, rows, &result);
+    int code = check_resolution(c, csv, rows);
+    if (code < 0) code = check_waypoints(c, links, csv, rows, &result);
     if (code < 0) code = check_motions(c, links, csv, rows, &motions);
     if (code < 0 && (c->want_distance || c->want_cost)) {
         const int64_t first = result.first_colliding_waypoint;

@@ -84,31 +84,56 @@ int cli_value(cli_args *args, const char *name) {
 
 int cli_is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
 
+int cli_is_decimal(const char *text) {
+    const char *p = text;
+    size_t digits;
+    if (*p == '+' || *p == '-') ++p;
+    digits = strspn(p, "0123456789");
+    p += digits;
+    if (*p == '.') {
+        const size_t fraction = strspn(p + 1, "0123456789");
+        digits += fraction;
+        p += 1 + fraction;
+    }
+    if (digits == 0) return 0;
+    if (*p == 'e' || *p == 'E') {
+        size_t exponent;
+        ++p;
+        if (*p == '+' || *p == '-') ++p;
+        if ((exponent = strspn(p, "0123456789")) == 0) return 0;
+        p += exponent;
+    }
+    return *p == '\0';
+}
+
 int cli_parse_double(const char *text, double *out) {
-    char *end = NULL;
-    if (text == NULL || *text == '\0') return -1;
-    *out = strtod(text, &end);
-    return *end == '\0' && isfinite(*out) ? 0 : -1;
+    if (text == NULL || !cli_is_decimal(text)) return -1;
+    *out = strtod(text, NULL);
+    return isfinite(*out) ? 0 : -1;
+}
+
+int cli_parse_numbers(const char *text, double *values, int capacity) {
+    char item[128];
+    int count = 0;
+    for (;;) {
+        const char *comma = strchr(text, ',');
+        const size_t length = comma != NULL ? (size_t)(comma - text) : strlen(text);
+        if (count == capacity || length >= sizeof item) return -1;
+        memcpy(item, text, length);
+        item[length] = '\0';
+        if (cli_parse_double(item, &values[count]) != 0) return -1;
+        ++count;
+        if (comma == NULL) return count;
+        text = comma + 1;
+    }
 }
 
 int cli_parse_pose(const char *text, opx_pose *out) {
     double v[7];
-    int n = 0;
-    const char *p = text;
-    while (n < 7) {
-        char *end = NULL;
-        v[n] = strtod(p, &end);
-        if (end == p || !isfinite(v[n])) return -1;
-        ++n;
-        if (*end == '\0') break;
-        if (*end != ',') return -1;
-        p = end + 1;
-    }
-    if (*p == '\0' || (n != 3 && n != 7)) return -1;
-    {
-        const opx_pose identity = OPX_POSE_IDENTITY;
-        *out = identity;
-    }
+    const int n = cli_parse_numbers(text, v, 7);
+    const opx_pose identity = OPX_POSE_IDENTITY;
+    if (n != 3 && n != 7) return -1;
+    *out = identity;
     memcpy(out->position, v, sizeof out->position);
     if (n == 7) {
         const double norm = sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);

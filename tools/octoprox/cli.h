@@ -70,8 +70,15 @@ int cli_walk_map_arguments(int argc, char **argv, const char *command, const cha
                            const char *help_part, const char **out_map, cli_option_parser parse_option,
                            void *context);
 
+/* 1 when text is a decimal number: an optional sign, digits with an
+ * optional fraction, an optional exponent; nothing else (no blanks, no
+ * hexadecimal, no inf or nan). */
+int cli_is_decimal(const char *text);
 /* Numbers and poses; 0 on success, -1 when malformed or not finite. */
 int cli_parse_double(const char *text, double *out);
+/* Comma-separated decimal numbers: their count, or -1 when an item is
+ * empty or no finite decimal number, or there are more than capacity. */
+int cli_parse_numbers(const char *text, double *values, int capacity);
 /* "x,y,z" or "x,y,z,qx,qy,qz,qw" (metres, quaternion in ROS order). */
 int cli_parse_pose(const char *text, opx_pose *out);
 

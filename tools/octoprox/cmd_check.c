@@ -111,14 +111,12 @@ static int parse_option(cli_args *args, void *context) {
         if (got < 0) return cli_usage("check", "--path needs a CSV file");
         a->context.path_file = args->value;
     } else if ((got = cli_value(args, "--resolution")) != 0) {
-        char *end = NULL;
-        if (got > 0) a->context.resolution = strtod(args->value, &end);
-        if (got < 0 || end == args->value || *end != '\0' || !(a->context.resolution > 0.0))
+        if (got < 0 || cli_parse_double(args->value, &a->context.resolution) != 0 || !(a->context.resolution > 0.0))
             return cli_usage("check", "--resolution needs a step > 0 (rad or m)");
     } else if ((got = cli_value(args, "--threads")) != 0) {
-        char *end = NULL;
-        const long threads = got > 0 ? strtol(args->value, &end, 10) : -1;
-        if (got < 0 || end == args->value || *end != '\0' || threads < 0 || threads > 1024)
+        const int digits = got > 0 && args->value[0] != '\0' && args->value[strspn(args->value, "0123456789")] == '\0';
+        const long threads = digits && strlen(args->value) <= 4 ? strtol(args->value, NULL, 10) : -1;
+        if (threads < 0 || threads > 1024)
             return cli_usage("check", "--threads needs a count from 0 (every core) to 1024");
         a->context.threads = (uint32_t)threads;
     } else {

@@ -87,7 +87,7 @@ static int parse_option(cli_args *args, ingest_args *out) {
         out->output = args->value;
     } else if ((got = cli_value(args, "--sensor-pose")) != 0) {
         if (got < 0 || cli_parse_pose(args->value, &out->frame.sensor_pose) != 0)
-            return cli_usage("ingest", "--sensor-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite numbers)");
+            return cli_usage("ingest", "--sensor-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite decimal numbers)");
         out->frame.has_sensor_pose = 1;
     } else if ((got = cli_value(args, "--res")) != 0) {
         if (got < 0 || cli_parse_double(args->value, &out->resolution) != 0 || !(out->resolution > 0.0))

@@ -36,23 +36,29 @@ opx_pose ingest_sensor_pose(const ingest_frame *frame, const opx_pose *viewpoint
     return pose;
 }
 
-/* The cloud's points, packed x y z; -1, or the exit code after a message. */
+/* The cloud's points, packed x y z; -1, or the exit code after a message
+ * (the reader's own for a file it refuses: exit 3). */
 static int read_points(const char *path, opx_point_cloud_info *info, float **xyz) {
     opx_point_cloud *cloud = NULL;
     size_t count = 0;
     opx_status status = opx_point_cloud_read_file(path, &cloud);
     if (status == OPX_OK) status = opx_point_cloud_get_info(cloud, info);
-    if (status == OPX_OK && info->point_count > SIZE_MAX / (3 * sizeof(float)) - 1)
-        status = OPX_ERROR_OUT_OF_MEMORY;
-    if (status == OPX_OK && (*xyz = malloc((size_t)info->point_count * 3 * sizeof(float) + 1)) == NULL)
-        status = OPX_ERROR_OUT_OF_MEMORY;
-    if (status == OPX_OK) status = opx_point_cloud_get_points(cloud, *xyz, (size_t)info->point_count, 0, &count);
+    if (status != OPX_OK) {
+        opx_point_cloud_destroy(cloud);
+        return cli_library_fail("ingest", status, "reading %s", path);
+    }
+    if (info->point_count > SIZE_MAX / (3 * sizeof(float)) - 1 ||
+        (*xyz = malloc((size_t)info->point_count * 3 * sizeof(float) + 1)) == NULL) {
+        opx_point_cloud_destroy(cloud);
+        return cli_fail("ingest", CLI_EXIT_INTERNAL, "%s: out of memory for %llu points", path,
+                        (unsigned long long)info->point_count);
+    }
+    status = opx_point_cloud_get_points(cloud, *xyz, (size_t)info->point_count, 0, &count);
     opx_point_cloud_destroy(cloud);
     if (status == OPX_OK) return -1;
     free(*xyz);
     *xyz = NULL;
-    if (status == OPX_ERROR_OUT_OF_MEMORY) return cli_fail("ingest", CLI_EXIT_INTERNAL, "%s: out of memory", path);
-    return cli_library_fail("ingest", status, "reading %s", path);
+    return cli_library_fail("ingest", status, "reading the points of %s", path);
 }
 
 static const char *encoding_name(int32_t encoding) {

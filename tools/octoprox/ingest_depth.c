@@ -7,21 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char kIntrinsicsUsage[] = "--intrinsics needs fx,fy,cx,cy (pixels, finite; fx and fy positive)";
+static const char kIntrinsicsUsage[] =
+    "--intrinsics needs fx,fy,cx,cy (pixels, finite decimal numbers; fx and fy positive)";
 static const char kScaleHint[] = "depth units per metre: 1000 for millimetres, 5000 for TUM RGB-D PNGs";
 
 /* "fx,fy,cx,cy": 0, or -1 when malformed. */
 static int parse_intrinsics(const char *text, opx_camera_intrinsics *out) {
     double v[4];
-    const char *p = text;
-    int n;
-    for (n = 0; n < 4; ++n) {
-        char *end = NULL;
-        v[n] = strtod(p, &end);
-        if (end == p || !isfinite(v[n]) || *end != (n == 3 ? '\0' : ',')) return -1;
-        p = end + 1;
-    }
-    if (!(v[0] > 0.0 && v[1] > 0.0)) return -1;
+    if (cli_parse_numbers(text, v, 4) != 4 || !(v[0] > 0.0 && v[1] > 0.0)) return -1;
     out->fx = v[0], out->fy = v[1], out->cx = v[2], out->cy = v[3];
     return 0;
 }

@@ -1,7 +1,8 @@
 /* Grouped polygon soups as OBJ and PLY: see mesh_out.h. */
 #include "mesh_out.h"
 
-#include <errno.h>
+#include "atomic_file.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -118,28 +119,11 @@ static size_t *faces_by_group(const mesh_out *m, size_t *starts) {
     return order;
 }
 
-/* Closes a file just written: 0, or -1 with errno set when a write or the
- * close failed (a full disk, a file size limit); the failed file is then
- * removed, so no truncated mesh is left behind. */
-static int finish_file(FILE *file, const char *path) {
-    const int write_failed = ferror(file);
-    int error = errno; /* the failed write's */
-    const int close_failed = fclose(file) != 0;
-    if (!write_failed && !close_failed) return 0;
-    if (!write_failed) error = errno;
-    remove(path);
-    errno = error != 0 ? error : EIO;
-    return -1;
-}
-
-static int write_mtl(const mesh_out *m, const char *path) {
-    FILE *file = fopen(path, "w");
+static void write_mtl(const mesh_out *m, FILE *file) {
     size_t g;
-    if (file == NULL) return -1;
     for (g = 0; g < m->group_count; ++g)
         fprintf(file, "newmtl %s\nKd %.3f %.3f %.3f\n\n", m->groups[g].name, m->groups[g].rgb[0] / 255.0,
                 m->groups[g].rgb[1] / 255.0, m->groups[g].rgb[2] / 255.0);
-    return finish_file(file, path);
 }
 
 static void write_obj_faces(FILE *file, const mesh_out *m, const size_t *order, const size_t *starts) {
@@ -155,40 +139,62 @@ static void write_obj_faces(FILE *file, const mesh_out *m, const size_t *order, 
     }
 }
 
+static void write_obj(const mesh_out *m, FILE *file, const char *mtl_name, const size_t *order,
+                      const size_t *starts) {
+    size_t v;
+    fprintf(file, "# octoprox export: %zu vertices, %zu faces, map frame, metres\nmtllib %s\n", m->vertex_count,
+            m->face_count, mtl_name);
+    for (v = 0; v < m->vertex_count; ++v)
+        fprintf(file, "v %.6f %.6f %.6f\n", m->vertices[3 * v], m->vertices[3 * v + 1], m->vertices[3 * v + 2]);
+    write_obj_faces(file, m, order, starts);
+}
+
+/* Both files are written and synced before either replaces its target,
+ * so a failure leaves the previous OBJ and MTL as they were. */
+static int write_obj_and_mtl(const mesh_out *m, const char *path, const char *mtl, const size_t *order,
+                             const size_t *starts) {
+    const char *slash = strrchr(path, '/');
+    atomic_file obj_file, mtl_file;
+    if (atomic_file_open(&mtl_file, mtl) != 0) return -1;
+    write_mtl(m, mtl_file.stream);
+    if (atomic_file_finish(&mtl_file) != 0) return -1;
+    if (atomic_file_open(&obj_file, path) != 0) {
+        atomic_file_discard(&mtl_file);
+        return -1;
+    }
+    write_obj(m, obj_file.stream, slash ? mtl + (slash - path) + 1 : mtl, order, starts);
+    if (atomic_file_finish(&obj_file) != 0) {
+        atomic_file_discard(&mtl_file);
+        return -1;
+    }
+    if (atomic_file_publish(&mtl_file) != 0) {
+        atomic_file_discard(&obj_file);
+        return -1;
+    }
+    return atomic_file_publish(&obj_file);
+}
+
 int mesh_write_obj(const mesh_out *m, const char *path) {
     char mtl[4096];
-    const char *slash = strrchr(path, '/');
-    size_t *starts = malloc((m->group_count + 1) * sizeof *starts), *order, v;
-    FILE *file;
+    size_t *starts = malloc((m->group_count + 1) * sizeof *starts), *order;
     int status;
     if (starts == NULL || (order = faces_by_group(m, starts)) == NULL) {
         free(starts);
         return -1;
     }
     snprintf(mtl, sizeof mtl, "%s.mtl", path);
-    file = write_mtl(m, mtl) == 0 ? fopen(path, "w") : NULL;
-    if (file != NULL) {
-        fprintf(file, "# octoprox export: %zu vertices, %zu faces, map frame, metres\nmtllib %s\n",
-                m->vertex_count, m->face_count, slash ? mtl + (slash - path) + 1 : mtl);
-        for (v = 0; v < m->vertex_count; ++v)
-            fprintf(file, "v %.6f %.6f %.6f\n", m->vertices[3 * v], m->vertices[3 * v + 1], m->vertices[3 * v + 2]);
-        write_obj_faces(file, m, order, starts);
-    }
-    status = file != NULL ? finish_file(file, path) : -1;
-    if (status != 0) {
-        const int error = errno;
-        remove(mtl);
-        errno = error;
-    }
+    status = write_obj_and_mtl(m, path, mtl, order, starts);
     free(order);
     free(starts);
     return status;
 }
 
 int mesh_write_ply(const mesh_out *m, const char *path) {
-    FILE *file = fopen(path, "wb");
+    atomic_file output;
+    FILE *file;
     size_t v, f;
-    if (file == NULL) return -1;
+    if (atomic_file_open(&output, path) != 0) return -1;
+    file = output.stream;
     fprintf(file, "ply\nformat binary_little_endian 1.0\ncomment octoprox export, map frame, metres\n"
                   "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n"
                   "property uchar red\nproperty uchar green\nproperty uchar blue\n"
@@ -204,5 +210,5 @@ int mesh_write_ply(const mesh_out *m, const char *path) {
         fwrite(&n, 1, 1, file);
         fwrite(face, sizeof(uint32_t), n, file);
     }
-    return finish_file(file, path);
+    return atomic_file_commit(&output);
 }

@@ -3,6 +3,8 @@
 
 #include "path_csv.h"
 
+#include "cli.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -79,11 +81,10 @@ static int read_row(char *line, path_csv *out, size_t *capacity, char *error, si
         *capacity = bigger;
     }
     for (i = 0; i < n; ++i) {
-        char *end = NULL;
         double *value = &out->values[out->waypoint_count * out->joint_count + i];
-        *value = strtod(cells[i], &end);
-        if (end == cells[i] || *end != '\0' || !isfinite(*value)) {
-            snprintf(error, error_size, "value '%s' of joint %s is not a finite number", cells[i], out->names[i]);
+        if (cli_parse_double(cells[i], value) != 0) {
+            snprintf(error, error_size, "value '%s' of joint %s is not a finite decimal number", cells[i],
+                     out->names[i]);
             return -1;
         }
     }

@@ -49,7 +49,7 @@ int robot_args_option(cli_args *args, robot_args *r, const char *command, int *c
         else r->srdf = args->value;
     } else if ((got = cli_value(args, "--padding")) != 0) {
         if (got < 0 || cli_parse_double(args->value, &r->padding) != 0 || !(r->padding >= 0.0))
-            *code = cli_usage(command, "--padding needs a distance in metres (a finite number >= 0)");
+            *code = cli_usage(command, "--padding needs a distance in metres (a finite decimal number >= 0)");
     } else if ((got = cli_value(args, "--disable-link")) != 0) {
         if (got < 0) *code = cli_usage(command, "--disable-link needs a link name");
         else if (r->disabled_link_count == ROBOT_MAX_DISABLED_LINKS)
@@ -60,41 +60,55 @@ int robot_args_option(cli_args *args, robot_args *r, const char *command, int *c
         else r->joints = args->value;
     } else if ((got = cli_value(args, "--base-pose")) != 0) {
         if (got < 0 || cli_parse_pose(args->value, &r->base_pose) != 0)
-            *code = cli_usage(command, "--base-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite numbers)");
+            *code = cli_usage(command, "--base-pose needs x,y,z or x,y,z,qx,qy,qz,qw (finite decimal numbers)");
     } else {
         return 0;
     }
     return 1;
 }
 
+/* One "name=value" item (cut in place at '='); 0, or -1 with a message
+ * naming the item (1-based `number`). */
+static int parse_joint_item(char *item, int number, const char **name, double *value, char *error,
+                            size_t error_size) {
+    char *equals = strchr(item, '=');
+    if (*item == '\0') {
+        snprintf(error, error_size, "--joints item %d is empty (name=value,... with no empty items)", number);
+        return -1;
+    }
+    if (equals == NULL || equals == item || cli_parse_double(equals + 1, value) != 0) {
+        snprintf(error, error_size, "--joints item %d '%s' is not name=value (a finite decimal number)", number,
+                 item);
+        return -1;
+    }
+    *equals = '\0';
+    *name = item;
+    return 0;
+}
+
 int robot_parse_joints(const char *text, char *buffer, size_t buffer_size, const char **names,
                        double *values, int capacity, char *error, size_t error_size) {
-    char *item, *save = NULL;
-    int count = 0;
+    char *item, *comma;
+    int count = 0, i;
     if (strlen(text) >= buffer_size) {
         snprintf(error, error_size, "--joints is too long");
         return -1;
     }
     strcpy(buffer, text);
-    for (item = strtok_r(buffer, ",", &save); item != NULL; item = strtok_r(NULL, ",", &save)) {
-        char *equals = strchr(item, '=');
-        int i;
+    for (item = buffer; item != NULL; item = comma != NULL ? comma + 1 : NULL) {
+        if ((comma = strchr(item, ',')) != NULL) *comma = '\0';
         if (count == capacity) {
             snprintf(error, error_size, "--joints names more than %d joints", capacity);
             return -1;
         }
-        if (equals == NULL || equals == item || cli_parse_double(equals + 1, &values[count]) != 0) {
-            snprintf(error, error_size, "--joints item '%s' is not name=value (a finite number)", item);
-            return -1;
-        }
-        *equals = '\0';
+        if (parse_joint_item(item, count + 1, &names[count], &values[count], error, error_size) != 0) return -1;
         /* One joint cannot take two values. */
         for (i = 0; i < count; ++i)
-            if (strcmp(names[i], item) == 0) {
-                snprintf(error, error_size, "--joints names joint %s twice", item);
+            if (strcmp(names[i], names[count]) == 0) {
+                snprintf(error, error_size, "--joints names joint %s twice", names[count]);
                 return -1;
             }
-        names[count++] = item;
+        ++count;
     }
     return count;
 }
