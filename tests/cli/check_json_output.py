@@ -82,6 +82,13 @@ def main():
         # Reports that succeed are whole objects.
         r.expect_report({0}, "ingest", cloud, "--res", "0.1", "-o", map_path)
         r.expect_report({0}, "info", map_path)
+        filtered = r.expect_report({0}, "ingest", cloud, "-o", r.path("filtered.bt"), "--urdf", urdf,
+                                   "--joints", "slide=2", "--robot-padding", "0.05",
+                                   "--clear-robot-volume")
+        if filtered is not None and not all(
+                isinstance(filtered["clouds"][0].get(name), int)
+                for name in ("points_on_robot", "points_shadowed", "cells_cleared")):
+            r.failures.append(f"ingest --urdf: no self-filtering counts in {filtered}")
         r.expect_report({0}, "check", map_path, "--urdf", urdf, "--distance", "--cost")
         r.expect_report({1}, "check", map_path, "--urdf", urdf, "--joints", "slide=2")
         r.expect_report({0, 1}, "check", map_path, "--urdf", urdf,
@@ -97,6 +104,10 @@ def main():
         r.expect_error(3, "missing.bt", "check", r.path("missing.bt"), "--urdf", urdf)
         r.expect_error(3, "bad.urdf", "check", map_path, "--urdf", r.path("bad.urdf", "<robot"))
         r.expect_error(3, "garbage.bt", "info", r.path("garbage.bt", "not a map\n"))
+        r.expect_error(2, "--robot-padding needs --urdf", "ingest", cloud, "-o", r.path("x.bt"),
+                       "--robot-padding", "0.1")
+        r.expect_error(3, "missing.urdf", "ingest", cloud, "-o", r.path("x.bt"),
+                       "--urdf", r.path("missing.urdf"))
         r.expect_error(3, "cut.pcd", "ingest", r.path("cut.pcd", wall_cloud()[:-400]),
                        "-o", r.path("cut.bt"))
         r.expect_error(3, "binary_compressed", "ingest",

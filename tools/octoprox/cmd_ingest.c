@@ -4,6 +4,7 @@
 #include "cloud_file.h"
 #include "commands.h"
 #include "ingest_cloud.h"
+#include "ingest_robot.h"
 
 #include <string.h>
 #include <unistd.h>
@@ -13,6 +14,8 @@ static const char kHelp[] =
     "                       [--sensor-pose x,y,z[,qx,qy,qz,qw]] [--optical-frame]\n"
     "                       [--res 0.05] [--endpoints] [--max-range M] [--json]\n"
     "                       [--intrinsics fx,fy,cx,cy --depth-scale S]\n"
+    "                       [--urdf ROBOT.urdf [robot options] [--robot-padding M]\n"
+    "                        [--clear-robot-volume]]\n"
     "\n"
     "Inserts each input as one sensor frame (OctoMap semantics: ray-cast, the\n"
     "cells along each ray become more free, the endpoint cells more occupied)\n"
@@ -49,11 +52,15 @@ static const char kHelp[] =
     "  --json              one JSON object: output, updated, resolution, clouds\n"
     "                      [{file, format, points (pixels of an image),\n"
     "                      points_used, points_nonfinite, points_out_of_range,\n"
-    "                      points_outside_map, pixels_no_return, cells_hit,\n"
-    "                      cells_missed, insert_ms, sensor_pose [x, y, z, qx,\n"
-    "                      qy, qz, qw], sensor_pose_from}], leaves {occupied,\n"
-    "                      uncertain, free}\n"
+    "                      points_outside_map, points_on_robot,\n"
+    "                      points_shadowed, pixels_no_return, cells_hit,\n"
+    "                      cells_missed, cells_cleared, insert_ms, sensor_pose\n"
+    "                      [x, y, z, qx, qy, qz, qw], sensor_pose_from}],\n"
+    "                      leaves {occupied, uncertain, free}\n"
     "  -h, --help          this help\n"
+    "\n";
+
+static const char kExitCodes[] =
     "\n"
     "exit codes: 0 ok, 2 usage error, 3 an input or the map cannot be read or\n"
     "written, 4 internal error\n";
@@ -67,6 +74,7 @@ typedef struct ingest_args {
     opx_insert_options insert;
     ingest_frame frame;
     ingest_camera camera;
+    ingest_robot robot; /* self-filtering */
     double resolution; /* 0: not given */
     int json;
 } ingest_args;
@@ -78,7 +86,8 @@ static int ends_with(const char *text, const char *suffix) {
 
 /* Returns -1 to go on, else an exit code. */
 static int parse_option(cli_args *args, ingest_args *out) {
-    int got;
+    int got, code;
+    if (ingest_robot_option(args, &out->robot, &code)) return code;
     if (cli_flag(args, "--json")) out->json = 1;
     else if (cli_flag(args, "--endpoints")) out->insert.mode = OPX_INSERT_ENDPOINTS;
     else if (cli_flag(args, "--optical-frame")) out->frame.optical_frame = 1;
@@ -110,10 +119,11 @@ static int parse_arguments(int argc, char **argv, ingest_args *out) {
     int code;
     memset(out, 0, sizeof *out);
     out->insert = defaults;
+    ingest_robot_init(&out->robot);
     for (; args.index < argc; ++args.index) {
         const char *arg = argv[args.index];
         if (cli_is_help(arg)) {
-            fputs(kHelp, stdout);
+            printf("%s%s%s%s", kHelp, kRobotOptionsHelp, kIngestRobotHelp, kExitCodes);
             return CLI_EXIT_OK;
         }
         if (arg[0] != '-') {
@@ -128,6 +138,7 @@ static int parse_arguments(int argc, char **argv, ingest_args *out) {
     }
     if (out->input_count == 0) return cli_usage("ingest", "no cloud given (nor a depth image)");
     if ((code = ingest_check_camera(&out->camera, out->inputs, out->input_count)) >= 0) return code;
+    if ((code = ingest_robot_check(&out->robot)) >= 0) return code;
     if (out->output == NULL) return cli_usage("ingest", "no output map given (-o MAP.bt)");
     if (!ends_with(out->output, ".bt") && !ends_with(out->output, ".ot") && !ends_with(out->output, ".opx"))
         return cli_usage("ingest", "the output map '%s' must end in .bt, .ot or .opx", out->output);
@@ -164,12 +175,14 @@ static void print_input_json(const char *path, const ingest_result *r, int last)
     fputs(", \"format\": ", stdout);
     json_string(stdout, r->format);
     printf(", \"points\": %zu, \"points_used\": %llu, \"points_nonfinite\": %llu, \"points_out_of_range\": %llu, "
-           "\"points_outside_map\": %llu, \"pixels_no_return\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, "
+           "\"points_outside_map\": %llu, \"points_on_robot\": %llu, \"points_shadowed\": %llu, "
+           "\"pixels_no_return\": %llu, \"cells_hit\": %llu, \"cells_missed\": %llu, \"cells_cleared\": %llu, "
            "\"insert_ms\": %.3f",
            r->points, (unsigned long long)p->points_used, (unsigned long long)p->points_nonfinite,
            (unsigned long long)p->points_out_of_range, (unsigned long long)p->points_outside_map,
+           (unsigned long long)p->points_on_robot, (unsigned long long)p->points_shadowed,
            (unsigned long long)p->pixels_no_return, (unsigned long long)p->cells_hit,
-           (unsigned long long)p->cells_missed, r->insert_ms);
+           (unsigned long long)p->cells_missed, (unsigned long long)p->cells_cleared, r->insert_ms);
     fputs(", \"sensor_pose\": [", stdout);
     for (i = 0; i < 7; ++i) {
         json_number(stdout, i < 3 ? r->sensor_pose.position[i] : r->sensor_pose.orientation[i - 3]);
@@ -183,6 +196,22 @@ static void print_input_json(const char *path, const ingest_result *r, int last)
 static void print_viewpoint_pose(const opx_pose *p) {
     printf("  sensor pose from the file's VIEWPOINT: %g,%g,%g,%g,%g,%g,%g (x,y,z,qx,qy,qz,qw)\n", p->position[0],
            p->position[1], p->position[2], p->orientation[0], p->orientation[1], p->orientation[2], p->orientation[3]);
+}
+
+/* One line per input; with a robot, what the filter took out. */
+static void print_input_text(const ingest_args *a, const char *path, const ingest_result *r) {
+    const opx_insert_report *p = &r->report;
+    printf("%s (%s): %zu %s, %llu used, %llu skipped", path, r->format, r->points,
+           ingest_is_depth_image(path) ? "pixels" : "points", (unsigned long long)p->points_used,
+           (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map +
+                                p->pixels_no_return));
+    if (a->robot.links != NULL)
+        printf(", %llu on the robot, %llu shadowed", (unsigned long long)p->points_on_robot,
+               (unsigned long long)p->points_shadowed);
+    printf("; %llu cells hit, %llu missed", (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed);
+    if (a->robot.links != NULL) printf(", %llu cleared", (unsigned long long)p->cells_cleared);
+    printf("; %.1f ms\n", r->insert_ms);
+    if (strcmp(r->pose_source, "VIEWPOINT") == 0) print_viewpoint_pose(&r->sensor_pose);
 }
 
 static void print_report(const ingest_args *a, const ingest_result *results, int updated,
@@ -200,16 +229,7 @@ static void print_report(const ingest_args *a, const ingest_result *results, int
                (unsigned long long)s->leaves_free);
         return;
     }
-    for (i = 0; i < a->input_count; ++i) {
-        const opx_insert_report *p = &results[i].report;
-        printf("%s (%s): %zu %s, %llu used, %llu skipped; %llu cells hit, %llu missed; %.1f ms\n",
-               a->inputs[i], results[i].format, results[i].points,
-               ingest_is_depth_image(a->inputs[i]) ? "pixels" : "points", (unsigned long long)p->points_used,
-               (unsigned long long)(p->points_nonfinite + p->points_out_of_range + p->points_outside_map +
-                                    p->pixels_no_return),
-               (unsigned long long)p->cells_hit, (unsigned long long)p->cells_missed, results[i].insert_ms);
-        if (strcmp(results[i].pose_source, "VIEWPOINT") == 0) print_viewpoint_pose(&results[i].sensor_pose);
-    }
+    for (i = 0; i < a->input_count; ++i) print_input_text(a, a->inputs[i], &results[i]);
     printf("%s %s: resolution %g m, leaves occupied %llu, uncertain %llu, free %llu\n",
            updated ? "updated" : "wrote", a->output, s->resolution, (unsigned long long)s->leaves_occupied,
            (unsigned long long)s->leaves_uncertain, (unsigned long long)s->leaves_free);
@@ -246,7 +266,8 @@ int cmd_ingest(int argc, char **argv) {
     opx_status status;
     int updated = 0, code = parse_arguments(argc, argv, &a);
     if (code >= 0) return code;
-    code = open_map(&a, &map, &updated);
+    code = ingest_robot_load(&a.robot, &a.insert);
+    if (code < 0) code = open_map(&a, &map, &updated);
     if (code < 0) code = ingest_all(&a, map, results);
     if (code < 0 && (status = opx_octree_save_file(map, a.output, OPX_FORMAT_AUTO)) != OPX_OK)
         code = cli_library_fail("ingest", status, "saving the map %s", a.output);
@@ -257,5 +278,6 @@ int cmd_ingest(int argc, char **argv) {
         code = CLI_EXIT_OK;
     }
     opx_octree_destroy(map);
+    ingest_robot_free(&a.robot);
     return code;
 }

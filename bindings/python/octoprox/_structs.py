@@ -39,7 +39,10 @@ class InsertOptions(Struct):
     (metres from the sensor; farther points give no occupied cell; <= 0:
     no limit, the default -1), max_threads (1: the caller's thread only,
     the default; 0: one per hardware thread; the map does not depend on
-    it)."""
+    it); self-filtering (Octree.insert_points' robot keywords): robot (the
+    address of the robot's opx_linkset; None: no filtering),
+    robot_padding (metres added to every link's padding for the filter,
+    0), clear_robot_volume (cells inside the robot become free; False)."""
     _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("sensor_pose", Pose),
                 ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32),
                 ("robot", c_void_p), ("robot_padding", c_double),
@@ -220,7 +223,7 @@ VERSIONED = {
 }
 
 # Flags read as bool, codes as IntEnum members (written back as ints).
-typed_fields(InsertOptions, mode=converter(InsertMode))
+typed_fields(InsertOptions, mode=converter(InsertMode), clear_robot_volume=bool)
 typed_fields(CellInfo, cell_class=converter(CellClass))
 typed_fields(OctreeStats, has_occupied=bool)
 typed_fields(Shape, kind=converter(ShapeKind))

@@ -22,6 +22,7 @@ from ._handle import Handle, api
 from ._library import init_struct, lib
 from ._structs import CellInfo, InsertReport, OctreeOptions, OctreeStats
 from ._types import ArrayLike, FileFormatLike, InsertModeLike, PathLike, PoseLike, Vector3
+from .linkset import LinkSet
 
 MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = CellMask.FREE, CellMask.UNCERTAIN, CellMask.OCCUPIED
 MASK_ALL_KNOWN = CellMask.ALL_KNOWN
@@ -45,9 +46,31 @@ def _camera(intrinsics):
     return init_struct(s.CameraIntrinsics, **dict(zip(("fx", "fy", "cx", "cy"), values)))
 
 
-def _insert_options(sensor_pose, mode, max_range, max_threads, where):
+def _robot_address(robot, where):
+    """The address of robot's opx_linkset (None: NULL, no filtering)."""
+    if robot is None:
+        return None
+    if not isinstance(robot, LinkSet):
+        raise TypeError(f"{where}: robot must be a LinkSet (e.g. LinkSet.from_urdf) or None, "
+                        f"got {type(robot).__name__}")
+    if robot.closed:  # NULL would mean "no robot": refuse it instead
+        raise robot._closed_error(where)
+    return robot._address
+
+
+def _insert_options(sensor_pose, mode, max_range, max_threads, self_filter, where):
+    """The InsertOptions of an insert; self_filter is (robot, robot_padding,
+    clear_robot_volume).  The library checks the padding's range and the
+    robot's poses."""
+    robot, robot_padding, clear_robot_volume = self_filter
+    try:
+        robot_padding = float(robot_padding)
+    except (TypeError, ValueError):
+        raise TypeError(f"{where}: robot_padding must be a number of metres, "
+                        f"got {robot_padding!r}") from None
     fields = dict(mode=InsertMode.parse(mode, where, "mode"), max_range=max_range,
-                  max_threads=max_threads)
+                  max_threads=max_threads, robot=_robot_address(robot, where),
+                  robot_padding=robot_padding, clear_robot_volume=bool(clear_robot_volume))
     if sensor_pose is not None:
         fields["sensor_pose"] = sensor_pose
     return init_struct(s.InsertOptions, **fields)
@@ -154,7 +177,9 @@ class Octree(Handle):
     @api("Octree.insert_points")
     def insert_points(self, points: ArrayLike, sensor_pose: Optional[PoseLike] = None, *,
                       mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
-                      max_threads: int = 1) -> InsertReport:
+                      max_threads: int = 1, robot: Optional[LinkSet] = None,
+                      robot_padding: float = 0.0,
+                      clear_robot_volume: bool = False) -> InsertReport:
         """Inserts one sensor frame; successive frames accumulate.
 
         points: (N, 3) or wider, in the SENSOR frame, metres; float32 or
@@ -169,14 +194,30 @@ class Octree(Handle):
           cell; <= 0: no limit.
         max_threads: 1 keeps the work on the caller's thread; 0 uses one
           per hardware thread; the map does not depend on it.
+        robot: self-filtering: the LinkSet (a URDF robot or one built by
+          hand) as it stood when the frame was captured, its poses as last
+          set.  A point within a link's padding plus robot_padding of it
+          (a robot point), or whose ray passes through the padded robot
+          (a shadowed point), gives no occupied cell; its ray carves free
+          space up to the robot.  None: no filtering.  The exact rules are
+          the C header's (octree.h, "The robot in its own frame").
+        robot_padding: metres added to every link's padding for the
+          filter only; finite and >= 0.
+        clear_robot_volume: True sets the cells lying entirely inside the
+          robot's unpadded solids free in the same update (an obstacle
+          where the arm now stands, its own earlier image); needs robot.
 
         Returns the InsertReport (points used, non-finite, out of range,
-        outside the map; cells hit and missed).  On an invalid argument
-        the map is unchanged.
+        outside the map, on the robot, shadowed; cells hit, missed and
+        cleared).  On an invalid argument (InvalidArgumentError naming it:
+        a bad robot_padding, clear_robot_volume without a robot, a robot
+        whose poses were never set) the map is unchanged.
         """
-        opts = _insert_options(sensor_pose, mode, max_range, max_threads, "Octree.insert_points")
+        opts = _insert_options(sensor_pose, mode, max_range, max_threads,
+                               (robot, robot_padding, clear_robot_volume), "Octree.insert_points")
         view = point_view(points, "Octree.insert_points")
         report = init_struct(s.InsertReport)
+        # robot, an argument, holds the link set (and its handle) for the call.
         lib.opx_octree_insert_points(self, view.address, view.count, view.stride,
                                      view.scalar_type, opts, report)
         return report
@@ -185,7 +226,9 @@ class Octree(Handle):
     def insert_depth_image(self, depth: ArrayLike, intrinsics, depth_scale: float = 1000.0,
                            sensor_pose: Optional[PoseLike] = None, *,
                            mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
-                           max_threads: int = 1) -> InsertReport:
+                           max_threads: int = 1, robot: Optional[LinkSet] = None,
+                           robot_padding: float = 0.0,
+                           clear_robot_volume: bool = False) -> InsertReport:
         """Inserts one depth frame, as insert_points inserts its points.
 
         depth: a 2-D array (rows, columns), read in place when it is uint16
@@ -200,14 +243,16 @@ class Octree(Handle):
         The pixel in column u, row v with depth z becomes the point
         ((u - cx) * z / fx, (v - cy) * z / fy, z) in the camera's optical
         frame (z forward, x right, y down); sensor_pose places that frame
-        in the map frame.  mode, max_range (along the ray), max_threads as
-        insert_points.  Pixels without a return are counted in the
-        report's pixels_no_return.
+        in the map frame.  mode, max_range (along the ray), max_threads and
+        self-filtering (robot, robot_padding in metres,
+        clear_robot_volume) as insert_points.  Pixels without a return are
+        counted in the report's pixels_no_return.
         """
+        where = "Octree.insert_depth_image"
         opts = _insert_options(sensor_pose, mode, max_range, max_threads,
-                               "Octree.insert_depth_image")
+                               (robot, robot_padding, clear_robot_volume), where)
         camera = _camera(intrinsics)
-        view = depth_view(depth, "Octree.insert_depth_image")
+        view = depth_view(depth, where)
         image = init_struct(s.DepthImage, data=view.address, width=view.width,
                             height=view.height, row_stride=view.row_stride,
                             scalar_type=view.scalar_type, depth_scale=depth_scale)

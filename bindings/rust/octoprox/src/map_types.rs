@@ -24,7 +24,7 @@
 //! ```
 use crate::enums::{is_set, known};
 use crate::error::Result;
-use crate::{sys, CellClass, InsertMode, Pose};
+use crate::{sys, CellClass, InsertMode, LinkSet, Pose};
 
 /// How a new map updates its cells (OctoMap's probabilities) and classes
 /// them.  Requirements: `1e-6 <= resolution <= 1e6`;
@@ -84,9 +84,27 @@ impl OctreeOptions {
     }
 }
 
-/// How one sensor frame is inserted.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct InsertOptions {
+/// How one sensor frame is inserted.  Borrows the robot it filters out,
+/// if any, for as long as the options live.
+///
+/// ```
+/// use octoprox::{pose_at, InsertOptions, LinkSet, Octree, OctreeOptions, Shape};
+///
+/// // The robot: a ball of radius 0.2 m, 2 m in front of the sensor.
+/// let mut robot = LinkSet::new()?;
+/// let link = robot.add_link("ball")?;
+/// robot.add_shape(link, &Shape::sphere(0.2))?;
+/// robot.set_poses(&[pose_at(2.0, 0.0, 0.0)])?;
+/// let mut map = Octree::new(&OctreeOptions::default())?;
+/// let filtered = InsertOptions { robot: Some(&robot), robot_padding: 0.02, ..Default::default() };
+/// // On the ball, behind it, elsewhere.
+/// let points = [[1.8f64, 0.0, 0.0], [3.0, 0.0, 0.0], [1.0, 1.0, 0.0]];
+/// let report = map.insert_points(&points, &filtered)?;
+/// assert_eq!((report.points_on_robot, report.points_shadowed, report.points_used), (1, 1, 1));
+/// # Ok::<(), octoprox::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct InsertOptions<'a> {
     /// Ray-cast (the default) or endpoints only.
     pub mode: InsertMode,
     /// The sensor frame in the map frame; the points are in the sensor
@@ -102,27 +120,69 @@ pub struct InsertOptions {
     /// default) starts none, 0 takes one per hardware thread.  The map does
     /// not depend on it.
     pub max_threads: u32,
+    /// Self-filtering: the robot when the frame was captured (a
+    /// [`LinkSet`], from URDF or built by hand), its link poses as last
+    /// set, attached objects included.  Points within a link's padding
+    /// plus `robot_padding` of it are robot points, points whose ray passes
+    /// through the padded robot are shadowed; neither gives an occupied
+    /// cell, and their rays carve free space up to the robot (the C
+    /// header's "The robot in its own frame").  A robot whose poses were
+    /// never set is an invalid argument.  `None` (the default): no
+    /// filtering.
+    pub robot: Option<&'a LinkSet>,
+    /// Metres added to every link's padding for the filter only; finite
+    /// and `>= 0` (else an invalid argument naming `robot_padding`).
+    /// Default 0.
+    pub robot_padding: f64,
+    /// Cells lying entirely inside the robot's unpadded solids become free
+    /// in the same update (counted in [`InsertReport::cells_cleared`]).
+    /// Needs `robot` (else an invalid argument).  Default false.
+    pub clear_robot_volume: bool,
 }
 
-impl Default for InsertOptions {
-    fn default() -> InsertOptions {
+impl Default for InsertOptions<'_> {
+    fn default() -> Self {
         let c = sys::opx_insert_options::default();
         InsertOptions {
             mode: InsertMode::from_raw(c.mode).unwrap_or_default(),
             sensor_pose: c.sensor_pose,
             max_range: c.max_range,
             max_threads: c.max_threads,
+            robot: None,
+            robot_padding: c.robot_padding,
+            clear_robot_volume: c.clear_robot_volume != 0,
         }
     }
 }
 
-impl InsertOptions {
+/// Equal options: the same fields, the same robot (the same [`LinkSet`]
+/// object, not an equal one).
+impl PartialEq for InsertOptions<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        let same_robot = match (self.robot, other.robot) {
+            (Some(a), Some(b)) => std::ptr::eq(a, b),
+            (a, b) => a.is_none() && b.is_none(),
+        };
+        same_robot
+            && (self.mode, self.sensor_pose, self.max_range, self.max_threads)
+                == (other.mode, other.sensor_pose, other.max_range, other.max_threads)
+            && (self.robot_padding, self.clear_robot_volume)
+                == (other.robot_padding, other.clear_robot_volume)
+    }
+}
+
+impl InsertOptions<'_> {
+    /// The C options; their robot pointer is valid while the borrow of
+    /// the robot (`'_`) lasts, which spans the insert call.
     pub(crate) fn to_c(self) -> sys::opx_insert_options {
         sys::opx_insert_options {
             mode: self.mode.raw(),
             sensor_pose: self.sensor_pose,
             max_range: self.max_range,
             max_threads: self.max_threads,
+            robot: self.robot.map_or(std::ptr::null_mut(), |r| r.as_raw() as *mut _),
+            robot_padding: self.robot_padding,
+            clear_robot_volume: u32::from(self.clear_robot_volume),
             ..Default::default()
         }
     }

@@ -117,7 +117,10 @@ impl Octree {
     /// `options.sensor_pose` in the map frame; successive frames accumulate.
     /// The points are read in place (no copy).  Non-finite points are
     /// counted and skipped; an invalid option leaves the map unchanged.
-    pub fn insert_points<'a>(&mut self, points: impl Into<Points<'a>>, options: &InsertOptions)
+    /// With `options.robot`, points on or behind the robot give no
+    /// occupied cell (self-filtering, counted in the report's
+    /// `points_on_robot` and `points_shadowed`).
+    pub fn insert_points<'a>(&mut self, points: impl Into<Points<'a>>, options: &InsertOptions<'_>)
         -> Result<InsertReport> {
         let points = points.into();
         let options = options.to_c();
@@ -140,9 +143,10 @@ impl Octree {
     /// return are skipped and counted in `pixels_no_return`.  The image is
     /// read in place.  Focal lengths must be positive (else
     /// [`crate::ErrorKind::InvalidArgument`] naming `intrinsics.fx` or
-    /// `.fy`), a uint16 image's depth scale too.
+    /// `.fy`), a uint16 image's depth scale too.  Self-filtering
+    /// (`options.robot`) applies to the back-projected points.
     pub fn insert_depth_image(&mut self, image: &DepthImage<'_>, intrinsics: &CameraIntrinsics,
-                              options: &InsertOptions) -> Result<InsertReport> {
+                              options: &InsertOptions<'_>) -> Result<InsertReport> {
         let (intrinsics, options) = (intrinsics.to_c(), options.to_c());
         let mut report = sys::opx_insert_report::default();
         // SAFETY: the image borrows its pixels for its lifetime and its

@@ -12,7 +12,7 @@ pub fn new_tree(resolution: f64) -> Octree {
     Octree::new(&OctreeOptions { resolution, ..Default::default() }).unwrap()
 }
 
-pub fn sensor_at(x: f64, y: f64, z: f64, mode: InsertMode) -> InsertOptions {
+pub fn sensor_at(x: f64, y: f64, z: f64, mode: InsertMode) -> InsertOptions<'static> {
     InsertOptions { mode, sensor_pose: pose_at(x, y, z), ..Default::default() }
 }
 
