@@ -154,8 +154,10 @@ typedef struct opx_motion_request {
     /** opx_query_check_motion only: 1 also gives the cost of uncertain and
      * unknown space the motion sweeps through, every configuration checked
      * (as opx_query_path with compute_cost over the n + 1 configurations:
-     * the boxes are held by the query, opx_query_get_cost_box).  Fields
-     * below as in opx_collision_request. */
+     * the boxes are held by the query, opx_query_get_cost_box).  The
+     * configurations' link poses are held during the call: (n + 1) x
+     * links may be at most 2^21 (2,097,152), else an invalid argument
+     * naming compute_cost.  Fields below as in opx_collision_request. */
     int32_t compute_cost;
     uint32_t max_cost_boxes;    /**< the costliest boxes kept (default 16) */
     uint32_t max_threads;       /**< opx_query_check_motions: 1 (default) or 0, as above */

@@ -164,6 +164,31 @@ static void swept_cost_equals_the_path_query(void **state) {
     opx_linkset_destroy(arm);
 }
 
+/* With compute_cost every sample's link poses are held: a motion of 1e6
+ * steps (within the 1e7 limit) on the arm is too many for that, refused at
+ * once with its own error, and the same motion without cost runs. */
+static void a_costed_motion_holds_bounded_poses(void **state) {
+    (void)state;
+    opx_linkset *arm = load_arm();
+    opx_octree *tree = new_scatter_map(7);
+    double start[ARM_JOINTS] = {0}, goal[ARM_JOINTS] = {0};
+    goal[0] = 1.0;
+    opx_query *query = new_query();
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.resolution = 1e-6;
+    request.compute_cost = 1;
+    opx_motion_result result = OPX_MOTION_RESULT_INIT;
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, "opx_query_check_motion", "compute_cost",
+                   opx_query_check_motion(query, tree, arm, start, goal, ARM_JOINTS, NULL, &request, &result));
+    request.compute_cost = 0;
+    request.resolution = 1e-3;
+    assert_ok(opx_query_check_motion(query, tree, arm, start, goal, ARM_JOINTS, NULL, &request, &result));
+    assert_int_equal(result.steps, 1000);
+    opx_query_destroy(query);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(arm);
+}
+
 /* A motion that does not move (start = goal) is one step, two samples. */
 static void a_motion_that_stays_put(void **state) {
     (void)state;
@@ -191,6 +216,7 @@ int main(void) {
         cmocka_unit_test(batch_equals_single_motion_calls),
         cmocka_unit_test(swept_cost_equals_the_path_query),
         cmocka_unit_test(a_motion_that_stays_put),
+        cmocka_unit_test(a_costed_motion_holds_bounded_poses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -188,21 +188,6 @@ TEST(BoxTree, WarmRebuildRefineAndQueriesDoNotAllocate) {
 
 // The Morton build is O(n): printed for doubling sizes (not asserted, the
 // machine is shared).
-TEST(BoxTree, BuildTimeScalesLinearly) {
-    std::mt19937_64 rng(16);
-    std::printf("random boxes: warm Morton build (10 bits, 8-bit digits) vs median-split AabbTree\n");
-    for (size_t n : {25000, 50000, 100000, 200000}) {
-        const std::vector<Aabb> boxes = unit::random_boxes(n, 20.0, 0.3, rng);
-        BoxTree tree;
-        tree.build(boxes);
-        const double morton = unit::best_milliseconds(5, [&] { tree.build(boxes); });
-        octoprox::AabbTree median;
-        const double top_down = unit::best_milliseconds(3, [&] { median.build(boxes); });
-        std::printf("  n %7zu  Morton %7.2f ms (%5.1f ns/box)  median split %7.2f ms\n", n, morton,
-                    1e6 * morton / double(n), top_down);
-    }
-}
-
 namespace {
 
 struct CurvePoint {

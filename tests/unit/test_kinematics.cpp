@@ -2,17 +2,13 @@
 // posed, new joint positions allocate nothing (joint tree, link placement,
 // mesh and link BVH refits), and FK answers a simple chain exactly.  FK cut
 // to the joints toward some links poses those links as the whole FK does.
-// With the shared data, the PR2's FK rate is printed (reported, not
-// asserted).
 #include "alloc_counter.hpp"
-#include "unit_scenes.hpp"
 
 #include "robot/joint_tree.hpp"
 #include "robot/urdf_model.hpp"
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -107,42 +103,5 @@ TEST(Kinematics, OrderTowardNeededLinks) {
     }
 }
 
-// Reported, not asserted: the rate of FK plus link placement on the PR2.
-TEST(Kinematics, Pr2Rate) {
-    const char *env = std::getenv("OPX_DATA_DIR");
-    const std::string dir = std::string(env != nullptr ? env : OPX_DEFAULT_DATA_DIR) + "/robots/pr2_description";
-    if (!file_exists(dir + "/urdf/robot.xml")) UNIT_SKIP_WITHOUT_DATA("no PR2 in " + dir);
-    UrdfInput input;
-    std::FILE *f = std::fopen((dir + "/urdf/robot.xml").c_str(), "rb");
-    ASSERT_NE(f, nullptr);
-    for (int c; (c = std::fgetc(f)) != EOF;) input.xml.push_back(static_cast<char>(c));
-    std::fclose(f);
-    input.source = "pr2";
-    input.paths.package_dirs = {"moveit_resources_pr2_description=" + dir};
-    LinkSet links;
-    RobotModel robot;
-    load_urdf(input, links, robot);
-    std::vector<double> q(robot.joints.joint_count(), 0.0);
-    std::vector<Pose> poses(links.link_count());
-    const int n = 2000;
-    auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < n; ++i) {
-        q[i % q.size()] = 0.001 * i;
-        robot.joints.set_commanded(q.data());
-        robot.joints.update_positions();
-        robot.joints.link_poses(Pose(), poses);
-    }
-    const double fk_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count() / n;
-    start = std::chrono::steady_clock::now();
-    for (int i = 0; i < n; ++i) {
-        q[i % q.size()] = 0.001 * i;
-        robot.joints.set_commanded(q.data());
-        robot.joints.update_positions();
-        robot.apply(links, Pose());
-    }
-    const double all_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count() / n;
-    std::printf("PR2 (%zu joints, %zu links): FK alone %.2f us, FK + placing all shapes %.1f us per configuration\n",
-                robot.joints.joint_count(), links.link_count(), fk_us, all_us);
-}
 
 }  // namespace

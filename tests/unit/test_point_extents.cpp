@@ -149,6 +149,29 @@ TEST(PointExtents, MapsFromFilesKeepWholeCells) {
     EXPECT_TRUE(extent::valid(leaf_at(*loaded, q).packed));
 }
 
+// Eight clamped cells prune into one leaf; when one of them came from a
+// file (no points), the leaf is the whole cube: an extent of the other
+// seven would shrink the obstacle and let a robot through the eighth.
+TEST(PointExtents, APrunedLeafWithACellFromAFileIsTheWholeCube) {
+    octoprox::OctreeParams params;
+    params.resolution = 0.1;
+    const Vec3 sensor(0.1, 0.1, 3.0), from_file(0.01, 0.01, 0.01);
+    SensorOctree first(params);
+    insert(first, {from_file}, sensor);
+    const std::string bytes = octoprox::write_map_file_bytes(first, octoprox::MapFormat::kBinary);
+    std::unique_ptr<SensorOctree> tree = octoprox::read_map_file_bytes(bytes, params);
+    std::vector<Vec3> others;  // a point near the far corner of each of the seven other cells
+    for (int i = 1; i < 8; ++i)
+        others.push_back(Vec3(0.1 * (i & 1), 0.1 * ((i >> 1) & 1), 0.1 * (i >> 2)) + Vec3(0.08, 0.08, 0.08));
+    // Ten frames clamp them all (the cell above the file's one starts free:
+    // the file's ray crossed it).
+    for (int i = 0; i < 10; ++i) insert(*tree, others, sensor);
+    const LeafAt leaf = leaf_at(*tree, from_file);
+    ASSERT_EQ(leaf.key.depth, 15) << "the eight cells prune";
+    EXPECT_EQ(leaf.packed, 0u) << "the leaf keeps no extent: it is the whole cube";
+    EXPECT_EQ(tree->stats().leaves_with_extent, 0u);
+}
+
 TEST(PointExtents, PrunedAndExpandedLeavesHoldTheirPoints) {
     octoprox::OctreeParams params;
     params.resolution = 0.1;

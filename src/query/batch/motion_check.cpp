@@ -91,6 +91,12 @@ MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, 
     MotionScratch scratch;
     scratch.sample.resize(worker.robot().joint_count());
     const size_t link_count = links.link_count();
+    const double held = (double(steps) + 1.0) * double(link_count);
+    if (held > kMaxCostPoses)
+        throw_invalid(format("request.compute_cost keeps every sample's link poses: %llu samples of %zu links "
+                             "are %.3g poses, more than %.3g; raise request.resolution or check the motion "
+                             "without cost",
+                             static_cast<unsigned long long>(steps + 1), link_count, held, kMaxCostPoses));
     std::vector<Pose> poses;
     poses.reserve((steps + 1) * link_count);
     for (uint64_t i = 0; i <= steps; ++i) {

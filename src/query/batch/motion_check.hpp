@@ -56,9 +56,14 @@ MotionAnswer check_motion(BatchWorker &worker, MotionScratch &scratch, const Sen
                           const double *start, const double *goal, uint64_t steps, const Pose &base,
                           const MotionSettings &settings);
 
+// The most link poses a motion with the swept cost holds (every sample's,
+// for the path query's union of swept cells): 2^21, about 200 MB.
+constexpr double kMaxCostPoses = double(uint64_t{1} << 21);
+
 // One motion with the swept cost: every sample's poses (FK on the worker's
 // robot) go through `context`'s path query (with the context's world), whose
-// cost boxes it then holds.
+// cost boxes it then holds.  An invalid-argument error naming compute_cost
+// when (steps + 1) x links exceeds kMaxCostPoses.
 MotionAnswer check_motion_with_cost(BatchWorker &worker, QueryContext &context, const SensorOctree &tree,
                                     const LinkSet &links, const double *start, const double *goal, uint64_t steps,
                                     const Pose &base, const MotionSettings &settings);
