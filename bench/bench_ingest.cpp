@@ -2,11 +2,14 @@
 // OctoProx (1 and 2 threads) against OctoMap's own insertPointCloud: the
 // first frame into a fresh map, and a later frame (the same frame into a
 // map that holds it once).  Ray-cast rows carry the frame's ray steps and
-// distinct cells, and the time per step.
+// distinct cells, and the time per step.  Every run checks that its maps
+// hold as many occupied and free leaves as OctoMap's (exit 1 otherwise).
 //
-//   opx-bench-ingest [--reps N] [--quick] [--generated] [--data DIR] [--json FILE]
+//   opx-bench-ingest [--reps N] [--quick] [--generated] [--robot] [--data DIR] [--json FILE]
+// --robot measures self-filtering instead (ingest_robot.hpp).
 #include "bench_frame.hpp"
 #include "bench_pipelines.hpp"
+#include "ingest_robot.hpp"
 #include "machine_probe.hpp"
 
 #include <octoprox/octoprox.h>
@@ -19,6 +22,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <string>
 #include <vector>
 
 #include <sys/resource.h>
@@ -28,6 +32,7 @@ namespace {
 struct Args {
     int reps = 5;
     bool quick = false;
+    bool robot = false;
     bool generated = false;
     std::string data_dir;
     std::string json_path;
@@ -47,10 +52,12 @@ struct Row {
 
 [[noreturn]] void usage(const char *program, int status) {
     std::fprintf(status ? stderr : stdout,
-                 "usage: %s [--reps N] [--quick] [--generated] [--data DIR] [--json FILE]\n"
+                 "usage: %s [--reps N] [--quick] [--generated] [--robot] [--data DIR] [--json FILE]\n"
                  "  --reps N     repetitions per row, median reported (default 5)\n"
                  "  --quick      smoke run: 1 repetition, 5 cm only\n"
                  "  --generated  use the synthetic room even when the real frame exists\n"
+                 "  --robot      self-filtering instead: the PR2's arms rendered into the real frame,\n"
+                 "               with and without the robot (needs the shared data; exits 77 without it)\n"
                  "  --data DIR   shared data folder (default $OPX_DATA_DIR, else the source tree's)\n"
                  "  --json FILE  also write the rows as a JSON array\n",
                  program);
@@ -66,6 +73,7 @@ Args parse_args(int argc, char **argv) {
         const bool has_value = i + 1 < argc;
         if (a == "--quick") args.quick = true;
         else if (a == "--generated") args.generated = true;
+        else if (a == "--robot") args.robot = true;
         else if (a == "--reps" && has_value) args.reps = std::atoi(argv[++i]);
         else if (a == "--data" && has_value) args.data_dir = argv[++i];
         else if (a == "--json" && has_value) args.json_path = argv[++i];
@@ -75,6 +83,22 @@ Args parse_args(int argc, char **argv) {
     if (args.quick) args.reps = 1;
     if (args.reps < 1) usage(argv[0], 2);
     return args;
+}
+
+// OctoProx's maps (one and two threads) hold as many occupied and free
+// leaves as OctoMap's map of the same frame (results[2], the reference of
+// the same semantics): a speed-up of a different map would be no speed-up.
+// Throws when they do not.
+void require_same_maps(const std::vector<bench::RunResult> &results, double resolution, const char *mode) {
+    const bench::RunResult &octomap = results[2];
+    for (size_t i = 0; i < 2; ++i)
+        if (results[i].occupied != octomap.occupied || results[i].free != octomap.free)
+            throw std::runtime_error("at " + std::to_string(resolution) + " m, " + mode + ", " +
+                                     bench::pipeline_name(i == 0 ? bench::Pipeline::kOctoprox
+                                                                 : bench::Pipeline::kOctoproxTwoThreads) +
+                                     " has " + std::to_string(results[i].occupied) + " occupied and " +
+                                     std::to_string(results[i].free) + " free leaves where OctoMap has " +
+                                     std::to_string(octomap.occupied) + " and " + std::to_string(octomap.free));
 }
 
 // The rows of one resolution: ray-cast (first and later frame) and
@@ -97,6 +121,7 @@ void run_resolution(const bench::Frame &frame, double resolution, int reps, std:
         pipelines.insert(pipelines.end(), plan.references.begin(), plan.references.end());
         const std::vector<bench::RunResult> results =
             bench::run_interleaved(pipelines, frame, resolution, plan.raycast, plan.later, reps);
+        require_same_maps(results, resolution, plan.mode);
         const double ours_ms = results[0].median_ms();
         const double octomap_ms = plan.raycast ? results[2].median_ms() : 0.0;
         for (size_t i = 0; i < pipelines.size(); ++i) {
@@ -189,6 +214,13 @@ long peak_rss_kib() {
 int main(int argc, char **argv) {
     const Args args = parse_args(argc, argv);
     try {
+        if (args.robot) {
+            bench::RobotRunOptions robot;
+            robot.data_dir = args.data_dir, robot.json_path = args.json_path, robot.cpu = cpu_name();
+            robot.quick = args.quick;
+            if (args.reps != 5) robot.reps = args.reps;
+            return bench::run_robot_rows(robot);
+        }
         const bench::Frame frame = bench::load_frame(args.data_dir, args.generated);
         std::printf("OctoProx %s ingest benchmark\n", opx_version());
         std::printf("frame: %s\n       %ux%u = %zu points, %zu finite; %d repetition(s) per row, fresh tree each\n",

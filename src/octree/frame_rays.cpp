@@ -20,6 +20,9 @@ namespace {
 // Frames whose box holds more cells than this (a megabyte of marks, the
 // size of a core's L2 cache) walk their rays in the order of their ends.
 constexpr uint64_t kOrderedAboveCells = uint64_t{1} << 23;
+// Parts of the frame's points per thread when a clip cuts rays (see
+// prepare_rays).
+constexpr size_t kClipPartsPerThread = 16;
 
 bool is_finite(const Vec3 &p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
@@ -257,10 +260,16 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
     const bool origin_inside = mapper.key(origin, origin_key);
     if (settings.raycast && !origin_inside) throw_invalid("sensor_pose.position lies outside the map cube");
 
-    std::vector<RayPart> parts(threads);
-    run_tasks(threads, [&](size_t i) {
-        const size_t begin = points.count * i / threads, end = points.count * (i + 1) / threads;
-        prepare_part(mapper, points, settings, origin, begin, end, parts[i]);
+    // A clip's work gathers where the robot is in view (a part of the
+    // image): its threads take many small parts in turn instead of one
+    // share each.  The parts' order changes nothing in the map.
+    const size_t part_count = settings.clip != nullptr && threads > 1 ? threads * kClipPartsPerThread : threads;
+    std::vector<RayPart> parts(part_count);
+    run_tasks(threads, [&](size_t t) {
+        for (size_t i = t; i < part_count; i += threads) {
+            const size_t begin = points.count * i / part_count, end = points.count * (i + 1) / part_count;
+            prepare_part(mapper, points, settings, origin, begin, end, parts[i]);
+        }
     });
     FrameRays rays;
     rays.origin = origin;
@@ -270,7 +279,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         rays.box.grow(k);
     }
     rays.hit_extents = std::move(parts[0].hit_extents);
-    for (size_t i = 0; i < threads; ++i) {
+    for (size_t i = 0; i < part_count; ++i) {
         rays.box.grow(parts[i].box);
         if (i > 0) {
             // Each part's entries are sorted (and merged) already.
@@ -281,7 +290,7 @@ FrameRays prepare_rays(const SensorOctree &tree, const PointSource &points, cons
         }
         if (!parts[i].rays.ends.empty()) rays.segments.push_back(std::move(parts[i].rays));
     }
-    if (threads > 1) merge_same_cells(rays.hit_extents);
+    if (part_count > 1) merge_same_cells(rays.hit_extents);
     if (settings.raycast && rays.box.volume() > kOrderedAboveCells) order_by_end(rays);
     for (const RayPart &part : parts) {
         counts.used += part.counts.used;

@@ -7,6 +7,7 @@
 // ball, under a BVH over its triangles.
 #pragma once
 
+#include "base/lazy_value.hpp"
 #include "broadphase/aabb_tree.hpp"
 #include "geometry/convex.hpp"
 #include "robot/box_columns.hpp"
@@ -42,6 +43,10 @@ struct ShapeDef {
     Aabb local_box;
     // Mesh: every edge shared by exactly two triangles (mesh_closure.hpp).
     bool closed = false;
+    // Convex and open mesh: a subset of the vertices holding every vertex
+    // of their hull (shape frame), made by the first self-filtered insert
+    // that needs it (self_filter/hull_vertices.hpp).
+    LazyValue<std::vector<Vec3>> hull_vertices;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.

@@ -1,5 +1,6 @@
 #include "self_filter/padded_robot.hpp"
 
+#include "self_filter/hull_vertices.hpp"
 #include "self_filter/mesh_solid.hpp"
 #include "self_filter/ray_entry.hpp"
 #include "self_filter/solid_geometry.hpp"
@@ -52,11 +53,18 @@ FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robo
     if (shape.kind == ShapeKind::kMesh) {
         shape.place_mesh();
         solid.closed_mesh = shape.def->closed;
-        solid.core.kind = ConvexKind::kHull;
-        solid.core.hull = shape.world_vertices.data();
-        solid.core.hull_count = shape.world_vertices.size();
     }
     return solid;
+}
+
+// A hull's points placed at the shape's pose: the hull's vertices among
+// the shape's (hull_vertices.hpp), found once per shape.
+std::vector<Vec3> placed_hull(const PlacedShape &shape) {
+    const ShapeDef &def = *shape.def;
+    const std::vector<Vec3> local = def.hull_vertices.get([&] { return hull_vertex_superset(def.vertices); });
+    std::vector<Vec3> placed(local.size());
+    for (size_t i = 0; i < local.size(); ++i) placed[i] = shape.core.axes * local[i] + shape.core.center;
+    return placed;
 }
 
 }  // namespace
@@ -83,11 +91,22 @@ PaddedRobot::PaddedRobot(const LinkSet &robot, double robot_padding, const Vec3 
     for (const PlacedShape &shape : robot.placed()) {
         if (shape.box.empty()) continue;  // a disabled link's
         if (shape.kind == ShapeKind::kMesh && shape.def->triangles.empty()) continue;
-        FilterSolid solid = solid_of(shape, robot, robot_padding);
-        solid.holds_origin = solid.holds(origin, solid.radius);
-        solids_.push_back(solid);
+        solids_.push_back(solid_of(shape, robot, robot_padding));
         balls_.push_back(bounding_ball(shape, robot_padding));
+        if (shape.kind == ShapeKind::kConvex || (shape.kind == ShapeKind::kMesh && !shape.def->closed))
+            hulls_.push_back(placed_hull(shape));
     }
+    // Hull cores point into hulls_, complete now.
+    size_t next_hull = 0;
+    for (FilterSolid &solid : solids_) {
+        const ShapeKind kind = solid.shape->kind;
+        if (kind != ShapeKind::kConvex && !(kind == ShapeKind::kMesh && !solid.closed_mesh)) continue;
+        const std::vector<Vec3> &hull = hulls_[next_hull++];
+        solid.core.kind = ConvexKind::kHull;
+        solid.core.hull = hull.data();
+        solid.core.hull_count = hull.size();
+    }
+    for (FilterSolid &solid : solids_) solid.holds_origin = solid.holds(origin, solid.radius);
     bins_.build(origin, balls_);
 }
 

@@ -49,6 +49,7 @@ private:
 
     Vec3 origin_;
     std::vector<FilterSolid> solids_;
+    std::vector<std::vector<Vec3>> hulls_;  // the hull solids' placed points, which their cores point into
     std::vector<Ball> balls_;  // per solid: a ball holding the padded solid
     DirectionBins bins_;
 };
