@@ -1,0 +1,27 @@
+// Small helpers of the self-filter tests: maps, one-link robots, inserts
+// of map-frame points seen from a sensor without rotation.
+#pragma once
+
+#include <octoprox/octoprox.h>
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace filter_oracle {
+
+opx_octree *new_map(double resolution);
+// A robot of one link holding `shape`, the link at `pose`.
+opx_linkset *one_link(const opx_shape &shape, const opx_pose &pose);
+
+struct FilterRequest {
+    const opx_linkset *robot = nullptr;
+    double robot_padding = 0.0;
+    bool clear_robot_volume = false;
+};
+// Inserts `points` (map frame) seen from `sensor` (map frame), as float64
+// offsets from it; fails the running cmocka test on an error.
+opx_insert_report insert_seen_from(opx_octree *tree, const FilterRequest &request, const Eigen::Vector3d &sensor,
+                                   const std::vector<Eigen::Vector3d> &points);
+
+}  // namespace filter_oracle

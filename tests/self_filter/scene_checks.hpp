@@ -1,0 +1,30 @@
+// The checks one rendered frame goes through (scene_checks.cpp): the
+// oracle's verdicts for its points, then at each resolution the library's
+// self-filtered map against them (see test_self_filter_oracle.cpp).
+#pragma once
+
+#include "filter_scenes.hpp"
+
+#include <string>
+
+namespace filter_oracle {
+
+struct SceneRun {
+    std::string label;
+    const opx_linkset *robot = nullptr;
+    FilterSettings settings;
+    FramePoints points;
+    RenderedFrame rendered;
+};
+
+// Seconds spent, for the log.
+struct SceneTimes {
+    double oracle = 0.0, library = 0.0, octomap = 0.0;
+};
+
+// Every check at each of `resolutions` (metres); fails the cmocka test on
+// the first violation.  Also checks the report of the depth-image path and
+// (when `threads` is set) that max_threads 1, 2 and 0 give the same bytes.
+void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bool threads, SceneTimes &times);
+
+}  // namespace filter_oracle
