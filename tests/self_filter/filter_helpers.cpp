@@ -4,14 +4,6 @@
 
 namespace filter_oracle {
 
-opx_octree *new_map(double resolution) {
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    options.resolution = resolution;
-    opx_octree *tree = nullptr;
-    real::check_ok(opx_octree_create(&options, &tree), "opx_octree_create");
-    return tree;
-}
-
 opx_linkset *one_link(const opx_shape &shape, const opx_pose &pose) {
     opx_linkset *robot = nullptr;
     real::check_ok(opx_linkset_create(&robot), "opx_linkset_create");

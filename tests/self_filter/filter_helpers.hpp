@@ -10,7 +10,6 @@
 
 namespace filter_oracle {
 
-opx_octree *new_map(double resolution);
 // A robot of one link holding `shape`, the link at `pose`.
 opx_linkset *one_link(const opx_shape &shape, const opx_pose &pose);
 

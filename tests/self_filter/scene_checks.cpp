@@ -106,7 +106,7 @@ void check_threads(const SceneRun &run, double resolution) {
     std::vector<unsigned char> first;
     opx_insert_report first_report = OPX_INSERT_REPORT_INIT;
     for (uint32_t threads : {1u, 2u, 0u}) {
-        opx_octree *tree = new_map(resolution);
+        opx_octree *tree = real::new_octree(resolution);
         const opx_insert_report r = insert_frame(tree, run.points.frame, filter_options(run, threads));
         const std::vector<unsigned char> bytes = saved(tree);
         opx_octree_destroy(tree);
@@ -131,7 +131,7 @@ void check_depth_image_report(const SceneRun &run, double resolution) {
     opx_insert_options options = filter_options(run, 1);
     options.sensor_pose = c.pose;
     opx_insert_report r = OPX_INSERT_REPORT_INIT;
-    opx_octree *tree = new_map(resolution);
+    opx_octree *tree = real::new_octree(resolution);
     real::check_ok(opx_octree_insert_depth_image(tree, &image, &intrinsics, &options, &r), "insert_depth_image");
     opx_octree_destroy(tree);
     assert_int_equal(r.points_used + r.points_nonfinite + r.points_out_of_range + r.points_outside_map +
@@ -142,7 +142,7 @@ void check_depth_image_report(const SceneRun &run, double resolution) {
 
 void check_resolution(const SceneRun &run, double resolution, const std::vector<Verdict> &verdicts, const Tally &t,
                       SceneTimes &times) {
-    opx_octree *tree = new_map(resolution);
+    opx_octree *tree = real::new_octree(resolution);
     Clock::time_point start = Clock::now();
     const opx_insert_report report = insert_frame(tree, run.points.frame, filter_options(run, 1));
     times.library += seconds_since(start);

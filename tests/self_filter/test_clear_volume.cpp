@@ -84,7 +84,7 @@ void ghost_at(double res) {
     keep.robot = clear.robot = arm;
     keep.robot_padding = clear.robot_padding = 0.02;
     clear.clear_robot_volume = true;
-    opx_octree *kept = filter_oracle::new_map(res), *cleared = filter_oracle::new_map(res);
+    opx_octree *kept = real::new_octree(res), *cleared = real::new_octree(res);
     filter_oracle::insert_seen_from(kept, none, sensor, obstacle);  // the obstacle, before the arm came
     filter_oracle::insert_seen_from(cleared, none, sensor, obstacle);
     const std::vector<Vec3> away = {Vec3(-1.5, -1.5, 2.2)};        // a frame that sees nothing of the arm
@@ -142,7 +142,7 @@ void test_attached_and_disabled(void **) {
     const std::vector<Vec3> points = {Vec3(0.87, 0, 0), Vec3(0.89, 0, 0), Vec3(1.5, 0, 0), Vec3(0.5, 0.5, 0)};
     filter_oracle::FilterRequest request;
     request.robot = robot, request.robot_padding = 0.02;
-    opx_octree *tree = filter_oracle::new_map(0.05);
+    opx_octree *tree = real::new_octree(0.05);
     opx_insert_report r = filter_oracle::insert_seen_from(tree, request, Vec3::Zero(), points);
     assert_int_equal(r.points_used, 2);
     assert_int_equal(r.points_on_robot, 1);

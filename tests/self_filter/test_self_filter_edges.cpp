@@ -23,7 +23,6 @@
 
 namespace {
 
-using filter_oracle::new_map;
 using filter_oracle::one_link;
 using filter_oracle::Vec3;
 
@@ -71,7 +70,7 @@ void band_edges_of(const opx_shape &shape, const char *kind, std::mt19937 &rng) 
         filter_oracle::FilterSettings settings;
         settings.robot_padding = kRobotPadding, settings.link_padding = {kSetPadding + kLinkPadding};
         const filter_oracle::OracleRobot oracle(robot, settings);
-        opx_octree *tree = new_map(0.05);
+        opx_octree *tree = real::new_octree(0.05);
         for (int sample = 0; sample < 30; ++sample) {
             const filter_oracle::SurfacePoint s = filter_oracle::random_surface_point(oracle.solids()[0], rng);
             (check_edge_pair(oracle, robot, tree, s, padding, kind) ? tested : skipped) += 1;
@@ -105,7 +104,7 @@ void test_deep_inside_the_closed_mesh(void **) {
         const Vec3 p = s.point - 0.005 * s.normal;
         if (oracle.solids()[0].distance(p) == 0.0) inside.push_back(p);
     }
-    opx_octree *tree = new_map(0.02);
+    opx_octree *tree = real::new_octree(0.02);
     const opx_insert_report r = insert(tree, robot, Vec3(-1, 0.2, 0.1), inside);
     assert_int_equal(r.points_on_robot, inside.size());
     opx_octree_destroy(tree);
