@@ -95,7 +95,7 @@ Expected expected_map(double resolution, const MapFrame &frame, const std::vecto
         }
         if (v.kind == Verdict::kKept) {
             if (tree.computeRayKeys(frame.origin, end, ray)) insert_keys(ray, free_cells);
-            if (tree.coordToKeyChecked(end, key)) occupied_cells.insert(key);
+            if (!v.range_cut && tree.coordToKeyChecked(end, key)) occupied_cells.insert(key);
             continue;
         }
         // As the library rounds its cut point: in double, then to float.

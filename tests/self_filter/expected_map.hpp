@@ -3,8 +3,9 @@
 // them (computeRayKeys to the point free, the point's cell occupied, the
 // occupied cells taken out of the free set), and each filtered point's ray
 // cut at the oracle's cut point as a ray cut at max_range is (its
-// computeRayKeys free, no occupied end).  Cells the oracle cannot pin down
-// are tolerated, and counted: those within 1e-6 m of a cut point (the
+// computeRayKeys free, no occupied end).  A frame point that is a ray's
+// cut at max_range (Verdict::range_cut) frees its ray and occupies
+// nothing.  Cells the oracle cannot pin down are tolerated, and counted: those within 1e-6 m of a cut point (the
 // library's cut may round to the other side) and every cell of an
 // ambiguous ray.
 #pragma once

@@ -22,10 +22,19 @@ opx_insert_report insert_seen_from(opx_octree *tree, const FilterRequest &reques
     for (int a = 0; a < 3; ++a) options.sensor_pose.position[a] = sensor[a];
     options.robot = request.robot, options.robot_padding = request.robot_padding;
     options.clear_robot_volume = request.clear_robot_volume ? 1u : 0u;
+    options.max_threads = request.max_threads;
     opx_insert_report r = OPX_INSERT_REPORT_INIT;
     real::check_ok(opx_octree_insert_points(tree, xyz.data(), points.size(), 0, OPX_SCALAR_FLOAT64, &options, &r),
                    "opx_octree_insert_points");
     return r;
+}
+
+std::vector<unsigned char> saved_bytes(const opx_octree *tree) {
+    size_t size = 0;
+    opx_octree_save_memory(tree, OPX_FORMAT_BT, nullptr, 0, &size);  // BUFFER_TOO_SMALL gives the size
+    std::vector<unsigned char> bytes(size);
+    real::check_ok(opx_octree_save_memory(tree, OPX_FORMAT_BT, bytes.data(), bytes.size(), &size), "save_memory");
+    return bytes;
 }
 
 }  // namespace filter_oracle

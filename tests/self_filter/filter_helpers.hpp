@@ -17,7 +17,11 @@ struct FilterRequest {
     const opx_linkset *robot = nullptr;
     double robot_padding = 0.0;
     bool clear_robot_volume = false;
+    uint32_t max_threads = 1;
 };
+
+// The map's bytes in the .bt format.
+std::vector<unsigned char> saved_bytes(const opx_octree *tree);
 // Inserts `points` (map frame) seen from `sensor` (map frame), as float64
 // offsets from it; fails the running cmocka test on an error.
 opx_insert_report insert_seen_from(opx_octree *tree, const FilterRequest &request, const Eigen::Vector3d &sensor,

@@ -157,9 +157,11 @@ bool OracleRobot::trace(const std::vector<size_t> &which, const Vec3 &origin, co
     return false;
 }
 
-Verdict OracleRobot::judge(const std::vector<size_t> &shadowing, const Vec3 &origin, const Vec3 &end) const {
+Verdict OracleRobot::judge(const std::vector<size_t> &shadowing, const Vec3 &origin, const Vec3 &end,
+                           bool range_cut) const {
     Verdict v;
-    const double end_gap = gap(end, kEndLimit);
+    v.range_cut = range_cut;
+    const double end_gap = range_cut ? INFINITY : gap(end, kEndLimit);
     v.end_gap = end_gap;
     v.ambiguous = std::fabs(end_gap) <= kAmbiguous;
     double t = 1.0;
@@ -169,13 +171,24 @@ Verdict OracleRobot::judge(const std::vector<size_t> &shadowing, const Vec3 &ori
     return v;
 }
 
-std::vector<Verdict> OracleRobot::judge_frame(const Vec3 &origin, const std::vector<Vec3> &ends) const {
+std::vector<size_t> OracleRobot::shadowing_solids(const Vec3 &origin) const {
     std::vector<size_t> shadowing;  // solids whose padded volume does not hold the sensor
     for (size_t i = 0; i < solids_.size(); ++i)
         if (solids_[i].distance(origin) > solids_[i].padding) shadowing.push_back(i);
+    return shadowing;
+}
+
+size_t OracleRobot::solids_holding(const Vec3 &origin) const {
+    return solids_.size() - shadowing_solids(origin).size();
+}
+
+std::vector<Verdict> OracleRobot::judge_frame(const Vec3 &origin, const std::vector<Vec3> &ends,
+                                              const std::vector<bool> &range_cut) const {
+    const std::vector<size_t> shadowing = shadowing_solids(origin);
     std::vector<Verdict> verdicts;
     verdicts.reserve(ends.size());
-    for (const Vec3 &end : ends) verdicts.push_back(judge(shadowing, origin, end));
+    for (size_t i = 0; i < ends.size(); ++i)
+        verdicts.push_back(judge(shadowing, origin, ends[i], !range_cut.empty() && range_cut[i]));
     return verdicts;
 }
 

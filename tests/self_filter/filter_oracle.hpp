@@ -46,6 +46,7 @@ struct Verdict {
     double t = 1.0;          // the cut: origin + t * (end - origin); 1 when kept
     bool ambiguous = false;  // within 1e-8 m of another verdict
     double end_gap = 0.0;    // the point's padded-distance surrogate: exact up to 1 cm, else a lower bound
+    bool range_cut = false;  // the end is a ray's cut at max_range, not a point: never a robot point
 };
 
 class OracleRobot {
@@ -59,13 +60,19 @@ public:
     // lower bound >= limit.
     double gap(const Vec3 &x, double limit = INFINITY) const;
     // Each point's verdict for a sensor at `origin` (map frame, double).
-    std::vector<Verdict> judge_frame(const Vec3 &origin, const std::vector<Vec3> &ends) const;
+    // Ends flagged in `range_cut` (may be empty) are rays cut at max_range:
+    // only their segment is judged (kept or shadowed).
+    std::vector<Verdict> judge_frame(const Vec3 &origin, const std::vector<Vec3> &ends,
+                                     const std::vector<bool> &range_cut = {}) const;
     const std::vector<Solid> &solids() const { return solids_; }
+    // The solids whose padded volume holds `origin` (they shadow nothing).
+    size_t solids_holding(const Vec3 &origin) const;
     size_t closed_meshes() const { return closed_meshes_; }
     size_t hull_meshes() const { return hull_meshes_; }
 
 private:
-    Verdict judge(const std::vector<size_t> &shadowing, const Vec3 &origin, const Vec3 &end) const;
+    std::vector<size_t> shadowing_solids(const Vec3 &origin) const;
+    Verdict judge(const std::vector<size_t> &shadowing, const Vec3 &origin, const Vec3 &end, bool range_cut) const;
     double gap_over(const std::vector<size_t> &which, const Vec3 &x, double limit) const;
     bool trace(const std::vector<size_t> &which, const Vec3 &origin, const Vec3 &end, double &t,
                bool &ambiguous) const;

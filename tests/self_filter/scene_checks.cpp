@@ -94,21 +94,13 @@ void check_cells(const SceneRun &run, const real::FineCells &cells, const std::v
                   robot_only, kept);
 }
 
-std::vector<unsigned char> saved(const opx_octree *tree) {
-    size_t size = 0;
-    opx_octree_save_memory(tree, OPX_FORMAT_BT, nullptr, 0, &size);  // BUFFER_TOO_SMALL gives the size
-    std::vector<unsigned char> bytes(size);
-    real::check_ok(opx_octree_save_memory(tree, OPX_FORMAT_BT, bytes.data(), bytes.size(), &size), "save_memory");
-    return bytes;
-}
-
 void check_threads(const SceneRun &run, double resolution) {
     std::vector<unsigned char> first;
     opx_insert_report first_report = OPX_INSERT_REPORT_INIT;
     for (uint32_t threads : {1u, 2u, 0u}) {
         opx_octree *tree = real::new_octree(resolution);
         const opx_insert_report r = insert_frame(tree, run.points.frame, filter_options(run, threads));
-        const std::vector<unsigned char> bytes = saved(tree);
+        const std::vector<unsigned char> bytes = saved_bytes(tree);
         opx_octree_destroy(tree);
         if (threads == 1u) {
             first = bytes, first_report = r;
@@ -163,6 +155,41 @@ void check_resolution(const SceneRun &run, double resolution, const std::vector<
     if (d.tolerated_differing * 1000 > d.cells) fail_msg("%s: too many tolerated cells differ", run.label.c_str());
 }
 
+// With max_range: the points beyond it (OctoMap's float test) are their
+// rays cut at max_range, judged as rays only, then cut again where they
+// enter the padded robot; the map must still equal OctoMap's.
+void check_max_range(const SceneRun &run, const OracleRobot &oracle, double resolution, double max_range) {
+    const MapFrame &frame = run.points.frame;
+    MapFrame rays;
+    rays.origin = frame.origin;
+    std::vector<bool> cut(frame.points.size(), false);
+    size_t beyond = 0;
+    for (size_t i = 0; i < frame.points.size(); ++i) {
+        const octomap::point3d &p = frame.points[i];
+        if ((p - frame.origin).norm() <= max_range) {
+            rays.points.push_back(p);
+            continue;
+        }
+        cut[i] = true, ++beyond;
+        rays.points.push_back(frame.origin + (p - frame.origin).normalized() * static_cast<float>(max_range));
+    }
+    const std::vector<Verdict> verdicts = oracle.judge_frame(as_double(frame.origin), as_doubles(rays.points), cut);
+    size_t cut_by_robot = 0;
+    for (size_t i = 0; i < verdicts.size(); ++i) cut_by_robot += cut[i] && verdicts[i].kind != Verdict::kKept;
+    opx_octree *tree = real::new_octree(resolution);
+    opx_insert_options options = filter_options(run, 1);
+    options.max_range = max_range;
+    const opx_insert_report r = insert_frame(tree, frame, options);
+    const MapDifference d = compare_maps(tree, expected_map(resolution, rays, verdicts));
+    opx_octree_destroy(tree);
+    print_message("  max_range %g m at %g cm: %zu points beyond it (report %llu), %zu of their rays then cut by the "
+                  "robot; %zu cells, %zu differ, %zu tolerated differ\n",
+                  max_range, resolution * 100, beyond, (unsigned long long)r.points_out_of_range, cut_by_robot, d.cells,
+                  d.differing, d.tolerated_differing);
+    assert_int_equal(r.points_out_of_range, beyond);
+    if (d.differing != 0) fail_msg("%s with max_range: %zu cells differ", run.label.c_str(), d.differing);
+}
+
 }  // namespace
 
 void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bool threads, SceneTimes &times) {
@@ -173,11 +200,14 @@ void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bo
     const Tally t = tally(run, verdicts);
     times.oracle += seconds_since(start);
     print_message("%s: %zu points: oracle kept %zu, robot %zu, shadowed %zu, ambiguous %zu; environment points "
-                  "within the padding %zu, up to 1 cm beyond %zu (%zu closed meshes, %zu hulls)\n",
+                  "within the padding %zu, up to 1 cm beyond %zu (%zu closed meshes, %zu hulls; %zu solids hold the "
+                  "sensor)\n",
                   run.label.c_str(), run.points.frame.points.size(), t.kept, t.on_robot, t.shadowed, t.ambiguous,
-                  t.env_in_band, t.env_just_beyond, oracle.closed_meshes(), oracle.hull_meshes());
+                  t.env_in_band, t.env_just_beyond, oracle.closed_meshes(), oracle.hull_meshes(),
+                  oracle.solids_holding(as_double(run.points.frame.origin)));
     if (t.ambiguous * 1000 > run.points.frame.points.size()) fail_msg("%s: too many ambiguous points", run.label.c_str());
     for (double resolution : resolutions) check_resolution(run, resolution, verdicts, t, times);
+    check_max_range(run, oracle, resolutions.front(), run.max_range);
     check_depth_image_report(run, resolutions.front());
     if (threads) check_threads(run, resolutions.front());
 }

@@ -13,6 +13,7 @@ struct SceneRun {
     std::string label;
     const opx_linkset *robot = nullptr;
     FilterSettings settings;
+    double max_range = 1.3;  // metres, for the check with max_range
     FramePoints points;
     RenderedFrame rendered;
 };

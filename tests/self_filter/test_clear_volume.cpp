@@ -113,6 +113,14 @@ void ghost_at(double res) {
     }
     assert_int_equal(r.cells_cleared, expected.size());
     assert_true(ghost_cells > 0);
+    for (uint32_t threads : {2u, 0u}) {  // the same bytes on more threads
+        opx_octree *again = real::new_octree(res);
+        filter_oracle::insert_seen_from(again, none, sensor, obstacle);
+        clear.max_threads = threads;
+        filter_oracle::insert_seen_from(again, clear, far_sensor, away);
+        assert_true(filter_oracle::saved_bytes(again) == filter_oracle::saved_bytes(cleared));
+        opx_octree_destroy(again);
+    }
     opx_octree_destroy(kept);
     opx_octree_destroy(cleared);
     opx_linkset_destroy(arm);

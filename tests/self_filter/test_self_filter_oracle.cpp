@@ -11,7 +11,8 @@
 //     finds them entering the padded robot, cell for cell, but for cells
 //     within 1e-6 m of a cut point and ambiguous rays (counted, rare);
 //   - the report's counts match the oracle's and add up, on the points and
-//     on the depth-image path; max_threads 1, 2, 0 give the same bytes.
+//     on the depth-image path; max_threads 1, 2, 0 give the same bytes;
+//   - with max_range, rays cut there and then by the robot: OctoMap's map.
 // OPX_SELF_FILTER_LONG=1 runs every configuration and camera.
 #include "scene_checks.hpp"
 
@@ -49,6 +50,7 @@ void test_arm_frames(void **) {
             run.robot = arm;
             run.settings.robot_padding = kRobotPadding;
             run.settings.link_padding = {0, 0, 0, 0, 0.005, 0};
+            run.max_range = 1.5;
             run.rendered = filter_oracle::render_frame(run.label, arm, world, cameras[c]);
             run.points = filter_oracle::frame_points(run.rendered);
             filter_oracle::check_scene(run, kResolutions, threads, g_times);
