@@ -151,7 +151,9 @@ opx_linkset *make_environment(const opx_linkset *arm) {
 }
 
 std::vector<render::Camera> arm_cameras() {
-    const double eyes[3][3] = {{-0.5, -0.8, 1.2}, {0.3, -0.9, 0.9}, {-0.6, 0.7, 1.0}};
+    // The last eye is inside the shoulder's cylinder: a solid holding the
+    // sensor shadows nothing.
+    const double eyes[4][3] = {{-0.5, -0.8, 1.2}, {0.3, -0.9, 0.9}, {-0.6, 0.7, 1.0}, {0.0, 0.0, 0.62}};
     const double target[3] = {0.4, 0.0, 0.45}, up[3] = {0.0, 0.0, 1.0};
     std::vector<render::Camera> cameras;
     for (const auto &eye : eyes) {

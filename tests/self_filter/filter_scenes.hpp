@@ -43,7 +43,8 @@ opx_shape arm_link_shape(int link);
 // behind it, as a link set to render.
 opx_linkset *make_environment(const opx_linkset *arm);
 
-// Cameras (320x240, fx = fy = 262.5) looking at the arm from around it.
+// Cameras (320x240, fx = fy = 262.5) looking at the arm from around it,
+// and one from inside the shoulder's cylinder.
 std::vector<render::Camera> arm_cameras();
 
 // The robot rendered from `camera` into the environment's rendering.

@@ -35,27 +35,34 @@ bool long_run() {
     return flag != nullptr && std::strcmp(flag, "1") == 0;
 }
 
+// Configuration and camera pairs: by default each configuration from one
+// camera and the first from inside the shoulder; the long run every pair.
+std::vector<std::pair<int, size_t>> arm_frames(size_t cameras) {
+    if (!long_run()) return {{0, 0}, {1, 1}, {2, 2}, {0, 3}};
+    std::vector<std::pair<int, size_t>> all;
+    for (int config = 0; config < filter_oracle::arm_configuration_count(); ++config)
+        for (size_t c = 0; c < cameras; ++c) all.push_back({config, c});
+    return all;
+}
+
 void test_arm_frames(void **) {
     const std::vector<render::Camera> cameras = filter_oracle::arm_cameras();
     bool threads = true;
-    for (int config = 0; config < filter_oracle::arm_configuration_count(); ++config) {
-        opx_linkset *arm = filter_oracle::make_arm(config);
+    for (const auto &frame : arm_frames(cameras.size())) {
+        opx_linkset *arm = filter_oracle::make_arm(frame.first);
         // The hand's own padding adds to robot_padding.
         real::check_ok(opx_linkset_set_link_padding(arm, 4, 0.005), "opx_linkset_set_link_padding");
         opx_linkset *world = filter_oracle::make_environment(arm);
-        for (size_t c = 0; c < cameras.size(); ++c) {
-            if (!long_run() && c != static_cast<size_t>(config) % cameras.size()) continue;
-            SceneRun run;
-            run.label = "arm configuration " + std::to_string(config) + ", camera " + std::to_string(c);
-            run.robot = arm;
-            run.settings.robot_padding = kRobotPadding;
-            run.settings.link_padding = {0, 0, 0, 0, 0.005, 0};
-            run.max_range = 1.5;
-            run.rendered = filter_oracle::render_frame(run.label, arm, world, cameras[c]);
-            run.points = filter_oracle::frame_points(run.rendered);
-            filter_oracle::check_scene(run, kResolutions, threads, g_times);
-            threads = false;
-        }
+        SceneRun run;
+        run.label = "arm configuration " + std::to_string(frame.first) + ", camera " + std::to_string(frame.second);
+        run.robot = arm;
+        run.settings.robot_padding = kRobotPadding;
+        run.settings.link_padding = {0, 0, 0, 0, 0.005, 0};
+        run.max_range = 1.5;
+        run.rendered = filter_oracle::render_frame(run.label, arm, world, cameras[frame.second]);
+        run.points = filter_oracle::frame_points(run.rendered);
+        filter_oracle::check_scene(run, kResolutions, threads, g_times);
+        threads = false;
         opx_linkset_destroy(world);
         opx_linkset_destroy(arm);
     }
