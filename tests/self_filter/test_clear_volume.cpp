@@ -133,6 +133,39 @@ void test_clear_robot_volume(void **) {
     ghost_at(0.01);
 }
 
+// A sensor inside a padded sphere (a camera in its housing): the sphere
+// shadows nothing; a point inside it is a robot point whose ray carves
+// nothing; a point beyond it is kept, its ray carving through the sphere.
+void test_sensor_inside_a_solid(void **) {
+    opx_shape ball = OPX_SHAPE_INIT;
+    ball.kind = OPX_SHAPE_SPHERE, ball.radius = 0.1;
+    const opx_pose identity = OPX_POSE_IDENTITY;
+    opx_linkset *robot = filter_oracle::one_link(ball, identity);
+    filter_oracle::FilterRequest request;
+    request.robot = robot, request.robot_padding = 0.02;
+    const Vec3 sensor(0.013, -0.021, 0.007);
+    opx_octree *tree = real::new_octree(0.02);
+    opx_insert_report r = filter_oracle::insert_seen_from(tree, request, sensor, {Vec3(0.09, 0.03, 0.0)});
+    assert_int_equal(r.points_on_robot, 1);
+    assert_int_equal(r.cells_missed + r.cells_hit, 0);
+    assert_int_equal(real::expand_octoprox(tree).size(), 0);
+    r = filter_oracle::insert_seen_from(tree, request, sensor, {Vec3(0.6, 0.05, 0.02)});
+    assert_int_equal(r.points_used, 1);
+    const real::FineCells cells = real::expand_octoprox(tree);
+    size_t inside_ball = 0, occupied = 0;
+    for (const auto &cell : cells) {
+        const Vec3 centre(((cell.first & 0xffff) - kKeyCenter + 0.5) * 0.02,
+                          (((cell.first >> 16) & 0xffff) - kKeyCenter + 0.5) * 0.02,
+                          ((cell.first >> 32) - kKeyCenter + 0.5) * 0.02);
+        inside_ball += centre.norm() < 0.1 && cell.second < 0.0f;
+        occupied += cell.second > 0.0f;
+    }
+    assert_true(inside_ball >= 3);  // the ray carved free cells inside the padded sphere
+    assert_int_equal(occupied, 1);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(robot);
+}
+
 // A sphere attached to a link without shapes filters as a link's would;
 // a disabled link filters nothing, nor its attached objects.
 void test_attached_and_disabled(void **) {

@@ -11,7 +11,9 @@
 //     exactly the cells entirely inside an unpadded solid (brute force over
 //     the cells around each solid: all 8 corners inside, and for the mesh
 //     no triangle meeting the cell);
-//   - attached objects filter like links; disabled links filter nothing.
+//   - attached objects filter like links; disabled links filter nothing;
+//   - a sensor inside a padded solid: it shadows nothing, a point in it
+//     is a robot point whose ray carves nothing.
 #include "band_samples.hpp"
 #include "filter_helpers.hpp"
 #include "filter_scenes.hpp"
@@ -115,11 +117,13 @@ void test_deep_inside_the_closed_mesh(void **) {
 
 void test_clear_robot_volume(void **);
 void test_attached_and_disabled(void **);
+void test_sensor_inside_a_solid(void **);
 
 int main() {
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_band_edges),
                                        cmocka_unit_test(test_deep_inside_the_closed_mesh),
                                        cmocka_unit_test(test_clear_robot_volume),
-                                       cmocka_unit_test(test_attached_and_disabled)};
+                                       cmocka_unit_test(test_attached_and_disabled),
+                                       cmocka_unit_test(test_sensor_inside_a_solid)};
     return cmocka_run_group_tests(tests, nullptr, nullptr);
 }
