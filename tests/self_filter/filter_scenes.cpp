@@ -39,7 +39,8 @@ std::vector<uint32_t> g_hand_indices;
 void build_hand_mesh() {
     if (!g_hand_vertices.empty()) return;
     for (int level = 0; level < 2; ++level)
-        for (const auto &p : kOutline) g_hand_vertices.insert(g_hand_vertices.end(), {p[0], p[1], level ? 0.02 : -0.02});
+        for (const auto &p : kOutline)
+            g_hand_vertices.insert(g_hand_vertices.end(), {p[0], p[1], level ? 0.02 : -0.02});
     const uint32_t fan[4][3] = {{3, 4, 5}, {3, 5, 0}, {3, 0, 1}, {3, 1, 2}};
     for (const auto &t : fan) {
         g_hand_indices.insert(g_hand_indices.end(), {t[0] + 6, t[1] + 6, t[2] + 6});  // top, counter-clockwise

@@ -53,7 +53,9 @@ void check_report(const SceneRun &run, const opx_insert_report &r, const Tally &
     assert_int_equal(r.points_used + r.points_nonfinite + r.points_out_of_range + r.points_outside_map +
                          r.points_on_robot + r.points_shadowed + r.pixels_no_return,
                      n);
-    const auto near = [&](uint64_t got, size_t expected) { return got + t.ambiguous >= expected && got <= expected + t.ambiguous; };
+    const auto near = [&](uint64_t got, size_t expected) {
+        return got + t.ambiguous >= expected && got <= expected + t.ambiguous;
+    };
     if (!near(r.points_used, t.kept) || !near(r.points_on_robot, t.on_robot) || !near(r.points_shadowed, t.shadowed))
         fail_msg("%s: report used %llu, on robot %llu, shadowed %llu; oracle %zu, %zu, %zu (+- %zu ambiguous)",
                  run.label.c_str(), (unsigned long long)r.points_used, (unsigned long long)r.points_on_robot,
@@ -79,7 +81,8 @@ void check_cells(const SceneRun &run, const real::FineCells &cells, const std::v
         if (environment_cells.count(key)) continue;
         ++robot_only;
         const auto cell = cells.find(key);
-        if (cell != cells.end() && cell->second > 0.0f) fail_msg("%s: a robot-only cell is occupied", run.label.c_str());
+        if (cell != cells.end() && cell->second > 0.0f)
+            fail_msg("%s: a robot-only cell is occupied", run.label.c_str());
     }
     size_t kept = 0;
     for (size_t i = 0; i < pts.size(); ++i) {
@@ -192,7 +195,8 @@ void check_max_range(const SceneRun &run, const OracleRobot &oracle, double reso
 
 }  // namespace
 
-void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bool threads, SceneTimes &times) {
+void check_scene(const SceneRun &run, const std::vector<double> &resolutions, const ExtraChecks &extra,
+                 SceneTimes &times) {
     Clock::time_point start = Clock::now();
     const OracleRobot oracle(run.robot, run.settings);
     const std::vector<Verdict> verdicts =
@@ -205,11 +209,12 @@ void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bo
                   run.label.c_str(), run.points.frame.points.size(), t.kept, t.on_robot, t.shadowed, t.ambiguous,
                   t.env_in_band, t.env_just_beyond, oracle.closed_meshes(), oracle.hull_meshes(),
                   oracle.solids_holding(as_double(run.points.frame.origin)));
-    if (t.ambiguous * 1000 > run.points.frame.points.size()) fail_msg("%s: too many ambiguous points", run.label.c_str());
+    if (t.ambiguous * 1000 > run.points.frame.points.size())
+        fail_msg("%s: too many ambiguous points", run.label.c_str());
     for (double resolution : resolutions) check_resolution(run, resolution, verdicts, t, times);
-    check_max_range(run, oracle, resolutions.front(), run.max_range);
-    check_depth_image_report(run, resolutions.front());
-    if (threads) check_threads(run, resolutions.front());
+    if (extra.max_range) check_max_range(run, oracle, resolutions.front(), run.max_range);
+    if (extra.depth_image) check_depth_image_report(run, resolutions.front());
+    if (extra.threads) check_threads(run, resolutions.front());
 }
 
 }  // namespace filter_oracle

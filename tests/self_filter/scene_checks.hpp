@@ -23,9 +23,16 @@ struct SceneTimes {
     double oracle = 0.0, library = 0.0, octomap = 0.0;
 };
 
+// The checks beyond the maps at each resolution, each at the first one.
+struct ExtraChecks {
+    bool threads = true;      // max_threads 1, 2 and 0 give the same bytes and report
+    bool max_range = true;    // the map with run.max_range
+    bool depth_image = true;  // the depth-image path's report adds up
+};
+
 // Every check at each of `resolutions` (metres); fails the cmocka test on
-// the first violation.  Also checks the report of the depth-image path and
-// (when `threads` is set) that max_threads 1, 2 and 0 give the same bytes.
-void check_scene(const SceneRun &run, const std::vector<double> &resolutions, bool threads, SceneTimes &times);
+// the first violation.
+void check_scene(const SceneRun &run, const std::vector<double> &resolutions, const ExtraChecks &extra,
+                 SceneTimes &times);
 
 }  // namespace filter_oracle

@@ -62,7 +62,8 @@ std::vector<Vec3> obstacle_points(const filter_oracle::OracleRobot &oracle, doub
         for (double x = -solid.bound; x <= solid.bound; x += res / 2)
             for (double y = -solid.bound; y <= solid.bound; y += res / 2)
                 for (double z = -solid.bound; z <= solid.bound; z += res / 2)
-                    if (solid.distance(solid.center + Vec3(x, y, z)) == 0.0) points.push_back(solid.center + Vec3(x, y, z));
+                    if (solid.distance(solid.center + Vec3(x, y, z)) == 0.0)
+                        points.push_back(solid.center + Vec3(x, y, z));
     return points;
 }
 

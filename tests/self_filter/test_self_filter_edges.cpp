@@ -96,7 +96,8 @@ void test_band_edges(void **) {
 // Points 5 mm inside the closed mesh's walls (3 cm thick) are robot points.
 void test_deep_inside_the_closed_mesh(void **) {
     std::mt19937 rng(5);
-    opx_linkset *robot = one_link(filter_oracle::arm_link_shape(4), filter_oracle::random_pose(rng, Vec3(1, 0, 0), 0.1));
+    const opx_pose pose = filter_oracle::random_pose(rng, Vec3(1, 0, 0), 0.1);
+    opx_linkset *robot = one_link(filter_oracle::arm_link_shape(4), pose);
     filter_oracle::FilterSettings settings;
     settings.robot_padding = kRobotPadding;
     const filter_oracle::OracleRobot oracle(robot, settings);
