@@ -20,14 +20,6 @@ namespace {
 
 using ingest::Frame;
 
-opx_octree *new_map(double resolution) {
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    options.resolution = resolution;
-    opx_octree *tree = nullptr;
-    real::check_ok(opx_octree_create(&options, &tree), "opx_octree_create");
-    return tree;
-}
-
 // The frame in the sensor frame (map point - origin, exact in double), with
 // the sensor at the origin: the library's transform gives the map points
 // back exactly.
@@ -92,7 +84,7 @@ void insert_both(opx_octree *ours, octomap::OcTree &theirs, const Frame &frame, 
 void test_random_frames(void **) {
     std::mt19937 rng(20261124);
     for (const double resolution : {0.05, 0.1, 0.02}) {
-        opx_octree *ours = new_map(resolution);
+        opx_octree *ours = real::new_octree(resolution);
         octomap::OcTree theirs(resolution);
         for (int i = 0; i < 6; ++i) {
             const double max_range = i % 3 == 2 ? 1.5 : -1.0;  // every third frame cut at 1.5 m
@@ -108,7 +100,7 @@ void test_random_frames(void **) {
 void test_clamped_and_pruned(void **) {
     std::mt19937 rng(7);
     const double resolution = 0.1;
-    opx_octree *ours = new_map(resolution);
+    opx_octree *ours = real::new_octree(resolution);
     octomap::OcTree theirs(resolution);
     const Frame same = ingest::random_frame(rng, 1.0f, 800, false);
     for (int i = 0; i < 14; ++i) insert_both(ours, theirs, same, -1.0, 2, "repeated frame " + std::to_string(i));
@@ -120,7 +112,7 @@ void test_clamped_and_pruned(void **) {
 
 void test_ties(void **) {
     for (const double resolution : {0.125, 0.25, 0.1, 0.05}) {
-        opx_octree *ours = new_map(resolution);
+        opx_octree *ours = real::new_octree(resolution);
         octomap::OcTree theirs(resolution);
         for (int variant = 0; variant < 6; ++variant) {
             const double max_range = variant >= 3 ? 6.5 * resolution : -1.0;
@@ -133,7 +125,7 @@ void test_ties(void **) {
 
 void test_dense_rows(void **) {
     for (const double resolution : {0.1, 0.05}) {
-        opx_octree *ours = new_map(resolution);
+        opx_octree *ours = real::new_octree(resolution);
         octomap::OcTree theirs(resolution);
         for (int variant = 0; variant < 4; ++variant) {
             const double max_range = variant == 3 ? 8.5 * resolution : -1.0;
@@ -147,7 +139,7 @@ void test_dense_rows(void **) {
 
 void test_room(void **) {
     for (const double resolution : {0.1, 0.05}) {
-        opx_octree *ours = new_map(resolution);
+        opx_octree *ours = real::new_octree(resolution);
         octomap::OcTree theirs(resolution);
         insert_both(ours, theirs, ingest::room_frame(octomap::point3d(-1.0f, 0.2f, 1.2f), 0.1f), -1.0, 2,
                     "room, first frame");
@@ -162,7 +154,7 @@ void test_room(void **) {
 void test_map_edge(void **) {
     const double resolution = 0.25;
     const float edge = static_cast<float>(32768 * resolution);
-    opx_octree *ours = new_map(resolution);
+    opx_octree *ours = real::new_octree(resolution);
     octomap::OcTree theirs(resolution);
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> near(-3.0f, 0.0f), across(-2.0f, 2.0f);
@@ -186,7 +178,7 @@ void test_far_points(void **) {
     frame.origin = octomap::point3d(0.1f, 0.2f, 0.3f);
     for (int i = 0; i < 60; ++i) frame.points.emplace_back(across(rng), across(rng), across(rng) * 0.1f);
     for (int i = 0; i < 200; ++i) frame.points.emplace_back(across(rng) * 0.002f, across(rng) * 0.002f, 1.0f);
-    opx_octree *ours = new_map(0.02);
+    opx_octree *ours = real::new_octree(0.02);
     octomap::OcTree theirs(0.02);
     insert_both(ours, theirs, frame, -1.0, 2, "far points");
     insert_both(ours, theirs, frame, 100.0, 1, "far points cut at 100 m");
@@ -222,7 +214,7 @@ void test_thread_counts(void **) {
     const Frame second = ingest::random_frame(rng, 2.5f, 20000, true);
     std::vector<real::LeafKey> first_leaves;
     for (const uint32_t threads : {1u, 2u, 3u, 8u, 0u}) {
-        opx_octree *ours = new_map(0.05);
+        opx_octree *ours = real::new_octree(0.05);
         insert_ours(ours, frame, -1.0, threads);
         insert_ours(ours, second, 3.0, threads);
         const std::vector<real::LeafKey> leaves = real::leaf_keys_octoprox(ours);

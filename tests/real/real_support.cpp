@@ -97,6 +97,14 @@ void check_ok(opx_status status, const char *what) {
     if (status != OPX_OK) fail_msg("%s: %s: %s", what, opx_status_name(status), opx_last_error());
 }
 
+opx_octree *new_octree(double resolution) {
+    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
+    options.resolution = resolution;
+    opx_octree *tree = nullptr;
+    check_ok(opx_octree_create(&options, &tree), "opx_octree_create");
+    return tree;
+}
+
 std::vector<opx_leaf> get_leaves(const opx_octree *tree, uint32_t mask) {
     size_t count = 0;
     const opx_status sizing = opx_octree_get_leaves(tree, mask, nullptr, 0, &count);

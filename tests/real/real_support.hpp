@@ -40,6 +40,9 @@ std::vector<unsigned char> read_file_bytes(const std::string &path);
 // Fails the running cmocka test with the library's message.
 void check_ok(opx_status status, const char *what);
 
+// A new empty map of `resolution` metres (fails the running test on error).
+opx_octree *new_octree(double resolution);
+
 // Every leaf of the classes in mask, depth first.
 std::vector<opx_leaf> get_leaves(const opx_octree *tree, uint32_t mask = OPX_MASK_ALL_KNOWN);
 // Leaves in a canonical order (depth, then centre), for comparing maps.

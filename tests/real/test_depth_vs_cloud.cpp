@@ -88,17 +88,9 @@ void test_cloud_is_the_back_projected_image(void **) {
     for (double g : gap) assert_true(g <= kMaxCoordinateGap);
 }
 
-opx_octree *new_octree(double resolution) {
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    options.resolution = resolution;
-    opx_octree *tree = nullptr;
-    real::check_ok(opx_octree_create(&options, &tree), "opx_octree_create");
-    return tree;
-}
-
 void compare_maps(double resolution) {
     const opx_insert_options identity = OPX_INSERT_OPTIONS_INIT;
-    opx_octree *from_depth = new_octree(resolution), *from_cloud = new_octree(resolution);
+    opx_octree *from_depth = real::new_octree(resolution), *from_cloud = real::new_octree(resolution);
     opx_depth_image image = OPX_DEPTH_IMAGE_INIT;
     image.data = g_depth.pixels;
     image.width = g_depth.width;

@@ -21,14 +21,6 @@ struct Pose {
 };
 const Pose kIdentity = {{0, 0, 0}, {0, 0, 0, 1}};
 
-opx_octree *new_octree(double resolution) {
-    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
-    options.resolution = resolution;
-    opx_octree *tree = nullptr;
-    real::check_ok(opx_octree_create(&options, &tree), "opx_octree_create");
-    return tree;
-}
-
 opx_insert_report insert_frame(opx_octree *tree, int32_t mode, const Pose &pose, double max_range) {
     opx_insert_options options = OPX_INSERT_OPTIONS_INIT;
     options.mode = mode;
@@ -87,7 +79,7 @@ void assert_same_map(const char *label, const opx_octree *ours, const octomap::O
 }
 
 void check_raycast_identity(double resolution) {
-    opx_octree *ours = new_octree(resolution);
+    opx_octree *ours = real::new_octree(resolution);
     const opx_insert_report report = insert_frame(ours, OPX_INSERT_RAYCAST, kIdentity, -1.0);
     assert_int_equal(report.points_used, kFiniteFramePoints);
     assert_int_equal(report.points_nonfinite, kFramePoints - kFiniteFramePoints);
@@ -105,7 +97,7 @@ void test_raycast_identity_5cm(void **) { check_raycast_identity(0.05); }
 void test_raycast_identity_2cm(void **) { check_raycast_identity(0.02); }
 
 void test_endpoints_identity(void **) {
-    opx_octree *ours = new_octree(0.05);
+    opx_octree *ours = real::new_octree(0.05);
     const opx_insert_report report = insert_frame(ours, OPX_INSERT_ENDPOINTS, kIdentity, -1.0);
     octomap::OcTree theirs(0.05);
     octomap::KeySet endpoint_cells;
@@ -121,7 +113,7 @@ void test_endpoints_identity(void **) {
 // cut at max_range and free the cells up to there.
 void test_max_range(void **) {
     const double max_range = 1.2, resolution = 0.05;
-    opx_octree *ours = new_octree(resolution);
+    opx_octree *ours = real::new_octree(resolution);
     const opx_insert_report report = insert_frame(ours, OPX_INSERT_RAYCAST, kIdentity, max_range);
     const size_t in_range = map_frame_cloud(kIdentity, max_range).size();
     assert_int_equal(report.points_used, in_range);
@@ -147,7 +139,7 @@ void test_max_range(void **) {
 // Two frames accumulate log-odds exactly as two OctoMap inserts do.
 void test_two_frames_accumulate(void **) {
     const Pose moved = {{0.10, -0.05, 0.02}, {0, 0, 0, 1}};  // the camera moved a little
-    opx_octree *ours = new_octree(0.05);
+    opx_octree *ours = real::new_octree(0.05);
     insert_frame(ours, OPX_INSERT_RAYCAST, kIdentity, -1.0);
     insert_frame(ours, OPX_INSERT_RAYCAST, moved, -1.0);
     octomap::OcTree theirs(0.05);
@@ -167,7 +159,7 @@ void test_rotated_pose(void **) {
     // Roughly a head camera (optical frame) looking along map +x, pitched
     // and yawed; the quaternion is deliberately not quite unit length.
     const Pose pose = {{0.30, -0.20, 1.10}, {-0.52, 0.48, -0.47, 0.52}};
-    opx_octree *ours = new_octree(0.05);
+    opx_octree *ours = real::new_octree(0.05);
     const opx_insert_report report = insert_frame(ours, OPX_INSERT_RAYCAST, pose, -1.0);
     assert_int_equal(report.points_used, kFiniteFramePoints);
     octomap::OcTree theirs(0.05);
