@@ -99,10 +99,7 @@ int main(int argc, char **argv) {
     int failed = 0;
     if (which == "pr2") {
         const std::string missing = render::missing_pr2_data(render::data_dir());
-        if (!missing.empty()) {
-            std::printf("SKIP: %s not found, set OPX_DATA_DIR\n", missing.c_str());
-            return 77;
-        }
+        if (!missing.empty()) real::exit_without_data(missing);
         const struct CMUnitTest tests[] = {cmocka_unit_test(test_pr2_frames)};
         failed = cmocka_run_group_tests(tests, nullptr, nullptr);
     } else {
