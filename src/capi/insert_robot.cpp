@@ -5,7 +5,6 @@
 #include "self_filter/padded_robot.hpp"
 #include "self_filter/robot_volume.hpp"
 
-#include <optional>
 
 namespace octoprox::capi {
 

@@ -20,11 +20,17 @@ constexpr double kGrazing = 1e-9;
 const Vec3 kParityDirections[] = {Vec3(0.5773, 0.5717, 0.5829), Vec3(-0.3121, 0.8267, -0.4683),
                                   Vec3(0.7016, -0.2087, -0.6813), Vec3(-0.6421, -0.6091, 0.4657)};
 
-// Visits the leaves whose box, grown by `margin`, passes `keep`.
+// A median-split tree (AabbTree::build) is about log2 of its triangles
+// deep; a walk keeps at most one pending node a level, as the narrow
+// phase's walks of the same trees do.
+constexpr int kStack = 64;
+
+// Calls leaf(triangle) for the leaves whose box, grown by `margin`,
+// passes `keep`.
 template <class Keep, class Leaf>
 void visit_leaves(const AabbTree &tree, double margin, Keep &&keep, Leaf &&leaf) {
     if (tree.empty()) return;
-    int32_t stack[64];
+    int32_t stack[kStack];
     int depth = 0;
     stack[depth++] = tree.root();
     while (depth > 0) {
@@ -34,10 +40,6 @@ void visit_leaves(const AabbTree &tree, double margin, Keep &&keep, Leaf &&leaf)
         if (!keep(box)) continue;
         if (node.is_leaf()) {
             leaf(node.item);
-            continue;
-        }
-        if (depth + 2 > 64) {  // deeper than a median-split tree gets: visit the rest directly
-            leaf(-1);
             continue;
         }
         stack[depth++] = node.right;
@@ -52,10 +54,10 @@ int crossing(const Convex &tri, const Vec3 &x, const Vec3 &dir) {
     const Vec3 p = dir.cross(e2);
     const double det = e1.dot(p);
     const double scale = e1.norm() * e2.norm();
-    if (std::fabs(det) <= kGrazing * scale) {
-        // In the ray's plane: a crossing only if the ray meets the triangle.
-        return 0;
-    }
+    // Parallel to the triangle's plane: no crossing.  A ray in that plane
+    // reaches the triangles around it across their edges, where they call
+    // it too close.
+    if (std::fabs(det) <= kGrazing * scale) return 0;
     const double inv = 1.0 / det;
     const Vec3 s = x - tri.v[0];
     const double u = s.dot(p) * inv;
@@ -72,20 +74,11 @@ int crossing(const Convex &tri, const Vec3 &x, const Vec3 &dir) {
 
 bool MeshSolid::near_surface(const Vec3 &x) const {
     bool found = false;
-    const double r2 = radius_ * radius_;
     visit_leaves(
         mesh_.mesh_tree, radius_,
         [&](const Aabb &box) { return !found && box.squared_distance(Aabb{x, x}) == 0.0; },
         [&](int32_t item) {
-            if (item < 0) {  // a degenerate tree: every triangle
-                for (size_t i = 0; i < mesh_.def->triangles.size() && !found; ++i) {
-                    const Convex t = mesh_.triangle(static_cast<int32_t>(i));
-                    found = (x - nearest_on_core(t, x)).squaredNorm() <= r2;
-                }
-                return;
-            }
-            const Convex t = mesh_.triangle(item);
-            if ((x - nearest_on_core(t, x)).squaredNorm() <= r2) found = true;
+            if (grown_core_holds(mesh_.triangle(item), radius_, x)) found = true;
         });
     return found;
 }
@@ -101,13 +94,9 @@ bool MeshSolid::count_crossings(const Vec3 &x, const Vec3 &dir, int &crossings) 
             return clear && segment_in_box(box, x, dir, t0, t1);
         },
         [&](int32_t item) {
-            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
-            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
-            for (size_t i = first; i < last && clear; ++i) {
-                const int c = crossing(mesh_.triangle(static_cast<int32_t>(i)), x, dir);
-                if (c < 0) clear = false;
-                crossings += c > 0 ? 1 : 0;
-            }
+            const int c = crossing(mesh_.triangle(item), x, dir);
+            if (c < 0) clear = false;
+            crossings += c > 0 ? 1 : 0;
         });
     return clear;
 }
@@ -136,13 +125,13 @@ double MeshSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const
         int32_t node;
         double t0;
     };
-    Pending stack[64];
+    Pending stack[kStack];
     int depth = 0;
     const auto push = [&](int32_t index) {
         Aabb box = tree.node(index).box;
         box.inflate(grown);
         double t0 = 0.0, t1 = limit;
-        if (depth < 64 && segment_in_box(box, origin, dir, t0, t1)) stack[depth++] = Pending{index, t0};
+        if (segment_in_box(box, origin, dir, t0, t1)) stack[depth++] = Pending{index, t0};
     };
     push(tree.root());
     while (depth > 0) {
@@ -168,16 +157,12 @@ bool MeshSolid::touches_box(const Aabb &box) const {
     visit_leaves(
         mesh_.mesh_tree, 0.0, [&](const Aabb &node) { return !touches && node.overlaps(box); },
         [&](int32_t item) {
-            const size_t first = item < 0 ? 0 : static_cast<size_t>(item);
-            const size_t last = item < 0 ? mesh_.def->triangles.size() : first + 1;
-            for (size_t i = first; i < last && !touches; ++i) {
-                const Convex t = mesh_.triangle(static_cast<int32_t>(i));
-                GjkQuery query;
-                query.cell_center = center, query.cell_half = half, query.shape = &t;
-                query.stop_above = 0.0;
-                const GjkResult result = gjk_cell_distance(query);
-                touches = result.intersecting || result.distance <= 0.0;
-            }
+            const Convex t = mesh_.triangle(item);
+            GjkQuery query;
+            query.cell_center = center, query.cell_half = half, query.shape = &t;
+            query.stop_above = 0.0;
+            const GjkResult result = gjk_cell_distance(query);
+            touches = result.intersecting || result.distance <= 0.0;
         });
     return touches;
 }

@@ -31,12 +31,12 @@ Aabb core_local_box(const PlacedShape &shape) {
     case ShapeKind::kCapsule: return Aabb::from_center(Vec3::Zero(), Vec3(0.0, 0.0, def.half_length));
     case ShapeKind::kBox: return Aabb::from_center(Vec3::Zero(), def.half_size);
     case ShapeKind::kCylinder: return Aabb::from_center(Vec3::Zero(), Vec3(def.radius, def.radius, def.half_length));
-    case ShapeKind::kConvex:
-    case ShapeKind::kMesh: {
+    case ShapeKind::kConvex: {
         Aabb box;
         for (const Vec3 &v : def.vertices) box.grow(v);
         return box;
     }
+    case ShapeKind::kMesh: return def.mesh_tree.node(def.mesh_tree.root()).box;  // its triangles' box
     }
     return Aabb();
 }
@@ -91,22 +91,19 @@ PaddedRobot::PaddedRobot(const LinkSet &robot, double robot_padding, const Vec3 
     for (const PlacedShape &shape : robot.placed()) {
         if (shape.box.empty()) continue;  // a disabled link's
         if (shape.kind == ShapeKind::kMesh && shape.def->triangles.empty()) continue;
-        solids_.push_back(solid_of(shape, robot, robot_padding));
-        balls_.push_back(bounding_ball(shape, robot_padding));
-        if (shape.kind == ShapeKind::kConvex || (shape.kind == ShapeKind::kMesh && !shape.def->closed))
+        FilterSolid solid = solid_of(shape, robot, robot_padding);
+        if (shape.kind == ShapeKind::kConvex || (shape.kind == ShapeKind::kMesh && !solid.closed_mesh)) {
+            // The core points into hulls_' inner vector, whose buffer stays
+            // where it is when hulls_ grows (its vectors are moved).
             hulls_.push_back(placed_hull(shape));
+            solid.core.kind = ConvexKind::kHull;
+            solid.core.hull = hulls_.back().data();
+            solid.core.hull_count = hulls_.back().size();
+        }
+        solid.holds_origin = solid.holds(origin, solid.radius);
+        solids_.push_back(solid);
+        balls_.push_back(bounding_ball(shape, robot_padding));
     }
-    // Hull cores point into hulls_, complete now.
-    size_t next_hull = 0;
-    for (FilterSolid &solid : solids_) {
-        const ShapeKind kind = solid.shape->kind;
-        if (kind != ShapeKind::kConvex && !(kind == ShapeKind::kMesh && !solid.closed_mesh)) continue;
-        const std::vector<Vec3> &hull = hulls_[next_hull++];
-        solid.core.kind = ConvexKind::kHull;
-        solid.core.hull = hull.data();
-        solid.core.hull_count = hull.size();
-    }
-    for (FilterSolid &solid : solids_) solid.holds_origin = solid.holds(origin, solid.radius);
     bins_.build(origin, balls_);
 }
 

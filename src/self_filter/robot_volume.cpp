@@ -2,6 +2,7 @@
 
 #include "base/error.hpp"
 #include "broadphase/morton.hpp"
+#include "octree/octree_cell.hpp"
 #include "self_filter/mesh_solid.hpp"
 
 #include <algorithm>
@@ -10,8 +11,7 @@
 namespace octoprox {
 namespace {
 
-constexpr double kKeyCenter = 32768.0;  // OctoMap's tree_max_val
-constexpr int64_t kKeyCount = 65536;
+constexpr int64_t kKeyCount = int64_t{2} * kKeyCenter;  // keys per axis
 
 // The key range [lo, hi] of the cells meeting [a, b] along one axis, cut
 // to the map; false when empty.
@@ -23,7 +23,8 @@ bool key_range(double a, double b, double resolution, int64_t &lo, int64_t &hi) 
     return true;
 }
 
-double corner(int64_t key, double resolution) { return (static_cast<double>(key) - kKeyCenter) * resolution; }
+// A finest cell's lowest coordinate along an axis, as cell_box gives it.
+double corner(int64_t key, double resolution) { return static_cast<double>(key - kKeyCenter) * resolution; }
 
 // The keys of the cells meeting the unpadded solid's box; false when none.
 bool solid_keys(const FilterSolid &solid, double resolution, int64_t lo[3], int64_t hi[3]) {
@@ -68,9 +69,10 @@ void add_solid_cells(const FilterSolid &solid, double resolution, std::vector<ui
                 if (!all) continue;
                 const int64_t key[3] = {lo[0] + x, lo[1] + y, lo[2] + z};
                 if (solid.closed_mesh) {
-                    const Vec3 low(corner(key[0], resolution), corner(key[1], resolution), corner(key[2], resolution));
-                    const Aabb cell{low, low + Vec3::Constant(resolution)};
-                    if (MeshSolid(*solid.shape, solid.solid_radius).touches_box(cell)) continue;
+                    CellKey cell;
+                    cell.depth = kTreeDepth;
+                    for (int axis = 0; axis < 3; ++axis) cell.key[axis] = static_cast<uint16_t>(key[axis]);
+                    if (MeshSolid(*solid.shape, solid.solid_radius).touches_box(cell_box(cell, resolution))) continue;
                 }
                 out.push_back(morton_encode(static_cast<uint32_t>(key[0]), static_cast<uint32_t>(key[1]),
                                             static_cast<uint32_t>(key[2])));

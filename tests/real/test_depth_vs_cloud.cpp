@@ -91,14 +91,20 @@ void test_cloud_is_the_back_projected_image(void **) {
     for (double g : gap) assert_true(g <= kMaxCoordinateGap);
 }
 
-void compare_maps(double resolution) {
-    const opx_insert_options identity = OPX_INSERT_OPTIONS_INIT;
-    opx_octree *from_depth = real::new_octree(resolution), *from_cloud = real::new_octree(resolution);
+// The real frame as the library takes it.
+opx_depth_image frame_image() {
     opx_depth_image image = OPX_DEPTH_IMAGE_INIT;
     image.data = g_depth.pixels;
     image.width = g_depth.width;
     image.height = g_depth.height;
     image.depth_scale = g_depth_scale;
+    return image;
+}
+
+void compare_maps(double resolution) {
+    const opx_insert_options identity = OPX_INSERT_OPTIONS_INIT;
+    opx_octree *from_depth = real::new_octree(resolution), *from_cloud = real::new_octree(resolution);
+    const opx_depth_image image = frame_image();
     opx_insert_report depth_report = OPX_INSERT_REPORT_INIT, cloud_report = OPX_INSERT_REPORT_INIT;
     real::check_ok(opx_octree_insert_depth_image(from_depth, &image, &g_camera, &identity, &depth_report),
                    "opx_octree_insert_depth_image");
@@ -144,11 +150,7 @@ void image_is_its_documented_points(double resolution) {
         }
     const opx_insert_options identity = OPX_INSERT_OPTIONS_INIT;
     opx_octree *from_depth = real::new_octree(resolution), *from_points = real::new_octree(resolution);
-    opx_depth_image image = OPX_DEPTH_IMAGE_INIT;
-    image.data = g_depth.pixels;
-    image.width = g_depth.width;
-    image.height = g_depth.height;
-    image.depth_scale = g_depth_scale;
+    const opx_depth_image image = frame_image();
     real::check_ok(opx_octree_insert_depth_image(from_depth, &image, &g_camera, &identity, nullptr),
                    "opx_octree_insert_depth_image");
     real::check_ok(opx_octree_insert_points(from_points, xyz.data(), xyz.size() / 3, 0, OPX_SCALAR_FLOAT32,
