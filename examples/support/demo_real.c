@@ -154,7 +154,7 @@ static int self_filter(const demo_story *story, const pcd_cloud *cloud, int quic
     v->u_min = 0.0;
     v->u_max = 1.3;
     v->v_min = 0.25;
-    v->v_max = 1.5; /* room for the scale bar above the camera */
+    v->v_max = 1.45; /* room for the scale bar above the camera */
     v->pixels_per_metre = quick ? 320.0 : 500.0;
     memcpy(f.fov_edges, story->picture.fov_edges, sizeof f.fov_edges);
     f.robot_label = "PR2 RIGHT ARM AT CAPTURE TIME (OUTLINE)";

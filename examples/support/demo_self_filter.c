@@ -136,10 +136,11 @@ static void report(const self_filter_scene *s, const filtered_map maps[2], size_
     printf("\nself-filter      %s, rendered into the frame (exact ray casting per pixel): %zu pixels see the arm, "
            "%zu take it\n",
            s->pose_label, seen, replaced);
-    printf("  without        %g cm map, %llu occupied leaves (%.0f ms); the arm %s\n", s->resolution * 100.0,
+    printf("  without        %g cm map, %llu occupied leaves (%.0f ms); the arm %s", s->resolution * 100.0,
            (unsigned long long)maps[0].stats.leaves_occupied, maps[0].ms,
            maps[0].collides ? "collides with its own image" : "is collision-free");
-    if (maps[0].collides) printf("                 (%zu cells)\n", maps[0].cells_hit);
+    if (maps[0].collides) printf(" (%zu cells)", maps[0].cells_hit);
+    printf("\n");
     printf("  with           robot_padding %g m, clear_robot_volume: %llu points on robot, %llu shadowed, %llu cells "
            "cleared;\n",
            s->robot_padding, (unsigned long long)r->points_on_robot, (unsigned long long)r->points_shadowed,
