@@ -11,7 +11,9 @@
  * table, the arm at a few waypoints, the cells and the table points it
  * hits and the unknown-space cost boxes of the path, as in the paper's
  * Fig. 3.  With --real, the same story runs on the real RGB-D frame and
- * the PR2 of the shared data folder.
+ * the PR2 of the shared data folder, and then the PR2's arm, rendered into
+ * its head camera's frame, is ingested without and with self-filtering
+ * (a before/after picture).
  *
  *   opx-demo [--out DIR] [--quick] [--real [--data DIR]]
  */

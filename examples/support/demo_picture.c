@@ -15,6 +15,9 @@
 #define MARGIN_RIGHT 80
 #define LEGEND_HEIGHT 164 /* 188 with known objects: one more line */
 #define LEGEND_WIDTH 1000 /* its longest line, the last, is 960 pixels */
+#define PANEL_BOTTOM 36   /* a panel without legend: room for the axis labels */
+#define PAIR_TITLE 36     /* the pair's title band */
+#define PAIR_LEGEND 64    /* the pair's legend: two lines */
 
 const colour kOccupied = {40, 40, 48}, kFree = {255, 255, 255}, kUnknown = {176, 180, 192};
 const colour kUncertain = {225, 205, 120}, kCollision = {220, 20, 30}, kCost = {255, 140, 0};
@@ -220,43 +223,115 @@ static void draw_scale_bar(picture_frame *f) {
     canvas_text(&f->c, x + len / 2 - canvas_text_width("1 M", 2) / 2, y + 10, "1 M", kText, 2);
 }
 
-/* Wide enough for the plot, the title and the legend. */
-static uint32_t picture_width(const picture_input *in, int plot_w) {
+/* Wide enough for the plot, the title and (with_legend) the legend. */
+static uint32_t picture_width(const picture_input *in, int plot_w, int with_legend) {
     int width = MARGIN_LEFT + plot_w + MARGIN_RIGHT;
     const int title = MARGIN_LEFT + 80 + canvas_text_width(in->view.title, 2) + 16;
     if (width < title) width = title;
-    if (width < MARGIN_LEFT + LEGEND_WIDTH) width = MARGIN_LEFT + LEGEND_WIDTH;
+    if (with_legend && width < MARGIN_LEFT + LEGEND_WIDTH) width = MARGIN_LEFT + LEGEND_WIDTH;
     return (uint32_t)width;
+}
+
+/* One panel on a canvas of its own: the slice and all drawn over it, its
+ * title, axes and scale bar, and the legend when with_legend (else room
+ * for the axis labels only).  0, or -1 when out of memory. */
+static int render_panel(picture_frame *f, const picture_input *in, int with_legend) {
+    const int below = with_legend ? LEGEND_HEIGHT + (in->known != NULL ? 24 : 0) : PANEL_BOTTOM;
+    f->view = &in->view;
+    f->plot_w = (int)ceil((in->view.u_max - in->view.u_min) * in->view.pixels_per_metre);
+    f->plot_h = (int)ceil((in->view.v_max - in->view.v_min) * in->view.pixels_per_metre);
+    if (canvas_create(&f->c, picture_width(in, f->plot_w, with_legend), (uint32_t)(MARGIN_TOP + f->plot_h + below)) != 0)
+        return -1;
+    draw_slice(f, in->map);
+    draw_cost_boxes(f, in);
+    picture_draw_known(f, in);
+    picture_draw_robot(f, in);
+    draw_collisions(f, in);
+    picture_draw_object_contacts(f, in);
+    picture_draw_tool_path(f, in);
+    draw_sensor(f, in);
+    draw_notes(f, in);
+    /* Margins are painted last so nothing drawn in map space spills over. */
+    canvas_fill_rect(&f->c, 0, 0, (int)f->c.width - 1, MARGIN_TOP - 2, kFree, 1.0);
+    canvas_fill_rect(&f->c, 0, MARGIN_TOP + f->plot_h + 1, (int)f->c.width - 1, (int)f->c.height - 1, kFree, 1.0);
+    canvas_fill_rect(&f->c, 0, 0, MARGIN_LEFT - 2, (int)f->c.height - 1, kFree, 1.0);
+    canvas_fill_rect(&f->c, MARGIN_LEFT + f->plot_w + 1, 0, (int)f->c.width - 1, (int)f->c.height - 1, kFree, 1.0);
+    canvas_text(&f->c, MARGIN_LEFT + 80, 12, in->view.title, kText, 2);
+    draw_axes(f);
+    draw_scale_bar(f);
+    if (with_legend) draw_legend(f, in);
+    return 0;
 }
 
 int demo_picture_write(const picture_input *in, const char *path) {
     picture_frame f;
     int status;
-    f.view = &in->view;
-    f.plot_w = (int)ceil((in->view.u_max - in->view.u_min) * in->view.pixels_per_metre);
-    f.plot_h = (int)ceil((in->view.v_max - in->view.v_min) * in->view.pixels_per_metre);
-    if (canvas_create(&f.c, picture_width(in, f.plot_w),
-                      (uint32_t)(MARGIN_TOP + f.plot_h + LEGEND_HEIGHT + (in->known != NULL ? 24 : 0))) != 0)
-        return -1;
-    draw_slice(&f, in->map);
-    draw_cost_boxes(&f, in);
-    picture_draw_known(&f, in);
-    picture_draw_robot(&f, in);
-    draw_collisions(&f, in);
-    picture_draw_object_contacts(&f, in);
-    picture_draw_tool_path(&f, in);
-    draw_sensor(&f, in);
-    draw_notes(&f, in);
-    /* Margins are painted last so nothing drawn in map space spills over. */
-    canvas_fill_rect(&f.c, 0, 0, (int)f.c.width - 1, MARGIN_TOP - 2, kFree, 1.0);
-    canvas_fill_rect(&f.c, 0, MARGIN_TOP + f.plot_h + 1, (int)f.c.width - 1, (int)f.c.height - 1, kFree, 1.0);
-    canvas_fill_rect(&f.c, 0, 0, MARGIN_LEFT - 2, (int)f.c.height - 1, kFree, 1.0);
-    canvas_fill_rect(&f.c, MARGIN_LEFT + f.plot_w + 1, 0, (int)f.c.width - 1, (int)f.c.height - 1, kFree, 1.0);
-    canvas_text(&f.c, MARGIN_LEFT + 80, 12, in->view.title, kText, 2);
-    draw_axes(&f);
-    draw_scale_bar(&f);
-    draw_legend(&f, in);
+    if (render_panel(&f, in, 1) != 0) return -1;
     status = png_write_rgb(path, f.c.rgb, f.c.width, f.c.height);
     canvas_free(&f.c);
+    return status;
+}
+
+static void blit(canvas *to, const canvas *from, uint32_t x0, uint32_t y0) {
+    uint32_t y;
+    for (y = 0; y < from->height && y0 + y < to->height; ++y)
+        memcpy(&to->rgb[3 * ((size_t)(y0 + y) * to->width + x0)], &from->rgb[3 * (size_t)y * from->width],
+               3 * (size_t)(from->width < to->width - x0 ? from->width : to->width - x0));
+}
+
+static const char *const kCellClasses[3] = {"OCCUPIED", "FREE", "UNKNOWN (NEVER SEEN)"};
+
+/* The pair's legend's first line: its entries, each a swatch, a label and
+ * a gap (legend_entry), after the left margin. */
+static int pair_legend_width(const picture_input *in) {
+    int width = MARGIN_LEFT, i;
+    for (i = 0; i < 3; ++i) width += 54 + canvas_text_width(kCellClasses[i], 2);
+    if (in->arm_count > 0) width += 54 + canvas_text_width(in->arm_labels[0] ? in->arm_labels[0] : "ROBOT", 2);
+    return width;
+}
+
+/* The pair's legend: the cell classes, the robot, the camera's field. */
+static void draw_pair_legend(canvas *c, const picture_input *in, int y) {
+    picture_frame f;
+    const colour fills[3] = {kOccupied, kFree, kUnknown}, edges[3] = {kOccupied, kText, kUnknown};
+    int x = MARGIN_LEFT, i;
+    f.c = *c;
+    for (i = 0; i < 3; ++i) x = legend_entry(&f, x, y, fills[i], 1.0, edges[i], 0, kCellClasses[i]);
+    if (in->arm_count > 0)
+        legend_entry(&f, x, y, kArmColours[0], in->arms_outline_only ? 0.0 : ARM_ALPHA, kArmColours[0], 0,
+                     in->arm_labels[0] ? in->arm_labels[0] : "ROBOT");
+    canvas_text(c, MARGIN_LEFT, y + 24, "DOTTED BLUE: CAMERA FIELD OF VIEW.", kText, 2);
+}
+
+/* Both panels, the title and the legend. */
+static uint32_t pair_width(const canvas *left, const canvas *right, const char *title, const picture_input *in) {
+    uint32_t width = left->width + right->width;
+    const uint32_t text = (uint32_t)(MARGIN_LEFT + canvas_text_width(title, 2) + 16);
+    const uint32_t legend = (uint32_t)pair_legend_width(in);
+    if (width < text) width = text;
+    if (width < legend) width = legend;
+    return width;
+}
+
+int demo_picture_write_pair(const picture_input *left, const picture_input *right, const char *title, const char *path) {
+    picture_frame l, r;
+    canvas pair;
+    int status = -1;
+    if (render_panel(&l, left, 0) != 0) return -1;
+    if (render_panel(&r, right, 0) != 0) {
+        canvas_free(&l.c);
+        return -1;
+    }
+    if (canvas_create(&pair, pair_width(&l.c, &r.c, title, left),
+                      PAIR_TITLE + (l.c.height > r.c.height ? l.c.height : r.c.height) + PAIR_LEGEND) == 0) {
+        canvas_text(&pair, MARGIN_LEFT, 12, title, kText, 2);
+        blit(&pair, &l.c, 0, PAIR_TITLE);
+        blit(&pair, &r.c, l.c.width, PAIR_TITLE);
+        draw_pair_legend(&pair, left, (int)pair.height - PAIR_LEGEND + 8);
+        status = png_write_rgb(path, pair.rgb, pair.width, pair.height);
+        canvas_free(&pair);
+    }
+    canvas_free(&l.c);
+    canvas_free(&r.c);
     return status;
 }

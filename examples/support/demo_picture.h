@@ -42,6 +42,9 @@ typedef struct picture_input {
     const char *arm_labels[PICTURE_MAX_ARMS];
     int arm_collides[PICTURE_MAX_ARMS];
     int arm_count;
+    /* Nonzero: the arms as outlines alone, the cells under them in their
+     * own colours (a picture about the cells the robot covers). */
+    int arms_outline_only;
     /* The tool's path (optional): its map-frame position at each of
      * tool_path_count waypoints (3 each), tool_collides[w] nonzero where
      * waypoint w collides, the waypoint each arm shows, a legend label. */
@@ -73,5 +76,12 @@ typedef struct picture_input {
 
 /* Renders and writes a PNG; 0, or -1 (out of memory, file not written). */
 int demo_picture_write(const picture_input *in, const char *path);
+
+/* A before/after pair: two panels side by side, each a picture_input
+ * drawn as above (its view's title over it, no legend), under one title,
+ * and one short legend (the cell classes, the left panel's first arm and
+ * its label, the camera's field of view).  0, or -1 as above. */
+int demo_picture_write_pair(const picture_input *left, const picture_input *right, const char *title,
+                            const char *path);
 
 #endif /* OPX_EXAMPLES_DEMO_PICTURE_H */

@@ -7,9 +7,12 @@
  * joint-space line from MoveIt's "tuck_right_arm" state to reaching
  * forward into the scene.  Only the right arm's links are checked:
  * the rest of the robot stands still and the camera does not see it.
+ * The frame holds no robot; the self-filter step puts the right arm into
+ * it (demo_self_filter.h).
  */
 #include "demo_real.h"
 
+#include "demo_self_filter.h"
 #include "demo_story.h"
 #include "pcd_reader.h"
 #include "shape_mesh.h"
@@ -36,6 +39,19 @@ static const char *const kStillJoints[8] = {"head_tilt_joint",      "l_shoulder_
                                             "l_upper_arm_roll_joint", "l_elbow_flex_joint",  "l_forearm_roll_joint",
                                             "l_wrist_flex_joint",   "l_wrist_roll_joint"};
 static const double kStillPositions[8] = {HEAD_TILT, 0.06024, 1.24853, 1.78907, -1.68339, -1.73434, -0.0962141, -0.0864407};
+
+/* The arm in the camera's view for the self-filter step: stretched
+ * forward, the forearm and gripper 10 to 20 cm above the table's height
+ * (its top at about 0.5 m), the gripper short of its near edge, all in the
+ * slice plane y = -0.19 m (pan and rolls 0).  At 5 cm no cell touching
+ * the arm also holds a table point farther than the padding from it, so
+ * the filtered map is collision-free at both of the demo's resolutions. */
+static const double kReachingOut[7] = {0.0, 0.2, 0.0, -0.15, 0.0, -0.2, 0.0};
+/* The self-filter's margin: the Kinect-class sensor's depth noise at
+ * about a metre is a centimetre or two, and the PR2's meshes are a
+ * little smaller than its arm; 2 cm takes the arm's own points and keeps
+ * the table beneath it. */
+#define ROBOT_PADDING 0.02
 
 /* The right arm: shoulder to gripper (not r_torso_lift_side_plate_link). */
 static int is_arm_link(const char *name) {
@@ -113,6 +129,40 @@ static void side_view(demo_story *s, int quick) {
     s->picture.fov_edge_count = 2;
 }
 
+/* The arm over the table, seen by the head camera: filtered out or not. */
+static int self_filter(const demo_story *story, const pcd_cloud *cloud, int quick) {
+    self_filter_scene f;
+    picture_view *v = &f.view;
+    memset(&f, 0, sizeof f);
+    f.robot = story->robot;
+    f.is_robot_link = is_arm_link;
+    f.base_pose = story->base_pose;
+    f.joint_names = kArmJoints;
+    f.positions = kReachingOut;
+    f.joint_count = 7;
+    f.pose_label = "the PR2's right arm reaching out toward the table in its head camera's view";
+    f.points = cloud->xyz;
+    f.camera.pose = story->sensor_pose;
+    f.camera.fx = f.camera.fy = 525.0;
+    f.camera.cx = 320.0;
+    f.camera.cy = 240.0;
+    f.camera.width = cloud->width;
+    f.camera.height = cloud->height;
+    f.resolution = story->resolution;
+    f.robot_padding = ROBOT_PADDING;
+    *v = story->picture.view;
+    v->u_min = 0.0;
+    v->u_max = 1.3;
+    v->v_min = 0.25;
+    v->v_max = 1.45; /* room for the scale bar above the camera */
+    v->pixels_per_metre = quick ? 320.0 : 500.0;
+    memcpy(f.fov_edges, story->picture.fov_edges, sizeof f.fov_edges);
+    f.robot_label = "PR2 RIGHT ARM AT CAPTURE TIME (OUTLINE)";
+    f.out_dir = story->out_dir;
+    f.picture_name = "opx-demo-real-self-filter.png";
+    return demo_self_filter_run(&f);
+}
+
 int demo_real_run(const char *data_dir, const char *out_dir, int quick) {
     static char frame_path[4096], frame_label[300];
     char error[600];
@@ -157,6 +207,7 @@ int demo_real_run(const char *data_dir, const char *out_dir, int quick) {
         printf("OctoProx %s demo --real: the PR2 reaches into a real RGB-D frame\n\n", opx_version());
         status = demo_story_run(&s);
     }
+    if (status == 0) status = self_filter(&s, &cloud, quick);
     pcd_free(&cloud);
     opx_linkset_destroy(s.robot);
     return status;

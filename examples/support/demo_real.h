@@ -1,5 +1,7 @@
 /* The demo's story on the shared real data (--real): the RGB-D frame of
- * rgbd/ and the PR2 of robots/pr2_description/. */
+ * rgbd/ and the PR2 of robots/pr2_description/; then the PR2's right arm
+ * in its head camera's frame, ingested without and with self-filtering
+ * (demo_self_filter.h). */
 #ifndef OPX_EXAMPLES_DEMO_REAL_H
 #define OPX_EXAMPLES_DEMO_REAL_H
 

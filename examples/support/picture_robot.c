@@ -75,7 +75,7 @@ static void draw_arms(picture_frame *f, const picture_input *in) {
             free(masks);
             return;
         }
-    for (i = 0; i < n; ++i)
+    for (i = 0; i < n && !in->arms_outline_only; ++i)
         for (a = in->arm_count - 1; a >= 0; --a)
             if (masks[(size_t)a * n + i]) {
                 canvas_pixel(&f->c, (int)(i % f->c.width), (int)(i / f->c.width), kArmColours[a], ARM_ALPHA);
