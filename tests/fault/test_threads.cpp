@@ -181,6 +181,14 @@ void sphere_queries(Record &record, const SharedScene &scene) {
     record.add("collide_spheres", opx_query_collide_spheres(query, scene.sphere_map, scene.spheres.data(), count, 0,
                                                             nullptr, collided.data(), count));
     record.add_bytes("spheres collided", collided.data(), count);
+    opx_sphere_distance_request request = OPX_SPHERE_DISTANCE_REQUEST_INIT;
+    request.max_threads = 2;
+    std::vector<double> distance(count), gradient(3 * count);
+    record.add("distance_spheres", opx_query_distance_spheres(query, scene.sphere_map, scene.spheres.data(), count, 0,
+                                                              &request, distance.data(), gradient.data(), nullptr,
+                                                              count));
+    record.add_bytes("sphere distances", distance.data(), count * sizeof(double));
+    record.add_bytes("sphere gradients", gradient.data(), 3 * count * sizeof(double));
     opx_query_destroy(query);
 }
 

@@ -34,6 +34,7 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_READ] = op_query_read,
     [OP_QUERY_SPHERES] = op_query_spheres,
     [OP_QUERY_BATCH] = op_query_batch,
+    [OP_QUERY_SPHERE_DISTANCE] = op_query_sphere_distance,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }

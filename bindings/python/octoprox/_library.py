@@ -186,6 +186,10 @@ SIGNATURES = {
     "opx_sphere_request_init": (status, [P(s.SphereRequest), c_size_t]),
     "opx_query_collide_spheres": (status, [handle, handle, c_void_p, c_size_t, c_size_t,
                                            P(s.SphereRequest), c_void_p, c_size_t]),
+    "opx_sphere_distance_request_init": (status, [P(s.SphereDistanceRequest), c_size_t]),
+    "opx_query_distance_spheres": (status, [handle, handle, c_void_p, c_size_t, c_size_t,
+                                            P(s.SphereDistanceRequest), c_void_p, c_void_p,
+                                            c_void_p, c_size_t]),
     # io.h
     "opx_point_cloud_read_file": (status, [c_char_p, P(handle)]),
     "opx_point_cloud_destroy": (None, [handle]),

@@ -1,7 +1,9 @@
 //! Spheres against the map (`include/octoprox/spheres.h`): the robot
 //! model of sphere-based planners.  Each sphere is answered on its own, as
 //! [`Query::collide`] answers a link set holding that sphere alone, without
-//! a link set to place.
+//! a link set to place.  [`Query::distance_spheres`] gives each sphere's
+//! signed distance, its gradient and a witness point, for trajectory
+//! optimizers.
 //!
 //! ```
 //! use octoprox::{InsertMode, InsertOptions, Octree, OctreeOptions, Query, QueryOptions, SphereRequest};
@@ -17,7 +19,8 @@
 //! ```
 use crate::enums::{is_set, ObstacleGeometry, UnknownPolicy};
 use crate::error::{check, Result};
-use crate::{sys, Octree, Query};
+use crate::{sys, Octree, Query, World};
+use std::ptr;
 
 /// What [`Query::collide_spheres`] takes as obstacles.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,5 +78,99 @@ impl Query {
                                            &request, collided.as_mut_ptr(), spheres.len())
         })?;
         Ok(collided.into_iter().map(|c| is_set(c as i32)).collect())
+    }
+}
+
+/// What [`Query::distance_spheres`] takes as obstacles, and how far it looks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereDistanceRequest {
+    /// What unknown space is (default [`UnknownPolicy::Free`]).
+    pub unknown_policy: UnknownPolicy,
+    /// As [`SphereRequest::occupancy_threshold`].
+    pub occupancy_threshold: f64,
+    /// What an occupied cell is as an obstacle.
+    pub obstacle_geometry: ObstacleGeometry,
+    /// 1 (the default): the caller's thread; 0: one per hardware thread.
+    pub max_threads: u32,
+    /// Metres, > 0 (default 0.1), infinity allowed: spheres at least this
+    /// far report it, a zero gradient and a NaN witness.
+    pub max_distance: f64,
+}
+
+impl Default for SphereDistanceRequest {
+    fn default() -> SphereDistanceRequest {
+        let c = sys::opx_sphere_distance_request::default();
+        SphereDistanceRequest {
+            unknown_policy: UnknownPolicy::from_raw(c.unknown_policy).unwrap_or_default(),
+            occupancy_threshold: c.occupancy_threshold,
+            obstacle_geometry: ObstacleGeometry::from_raw(c.obstacle_geometry).unwrap_or_default(),
+            max_threads: c.max_threads,
+            max_distance: c.max_distance,
+        }
+    }
+}
+
+impl SphereDistanceRequest {
+    fn to_c(self) -> sys::opx_sphere_distance_request {
+        sys::opx_sphere_distance_request {
+            unknown_policy: self.unknown_policy.raw(),
+            occupancy_threshold: self.occupancy_threshold,
+            obstacle_geometry: self.obstacle_geometry.raw(),
+            max_threads: self.max_threads,
+            max_distance: self.max_distance,
+            ..Default::default()
+        }
+    }
+}
+
+/// The answers of [`Query::distance_spheres`], one per sphere.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SphereDistances {
+    /// Signed distance, metres: surface to the nearest obstacle; negative
+    /// inside (minus the centre's depth, minus the radius).
+    pub distance: Vec<f64>,
+    /// Unit gradient of the distance with respect to the centre (away
+    /// from the nearest obstacle); zero when truncated.
+    pub gradient: Vec<[f64; 3]>,
+    /// The nearest obstacle point (inside: the nearest point outside every
+    /// obstacle), map frame; NaN when truncated.
+    pub witness: Vec<[f64; 3]>,
+}
+
+impl Query {
+    /// Signed distances of spheres (`spheres[i]`: x, y, z in the map frame
+    /// and the radius, metres) to the map's obstacles, with the gradient
+    /// and a witness each (`spheres.h`, `opx_query_distance_spheres`,
+    /// states the rules).  No spheres: no answers.
+    pub fn distance_spheres(&mut self, tree: &Octree, spheres: &[[f64; 4]], request: &SphereDistanceRequest)
+        -> Result<SphereDistances> {
+        self.distance_spheres_tree(tree.as_raw(), spheres, request)
+    }
+
+    /// [`Query::distance_spheres`] against the octree (`None`: no map) and
+    /// the enabled objects of `world` together.
+    pub fn distance_spheres_with_world(&mut self, tree: Option<&Octree>, world: &World, spheres: &[[f64; 4]],
+                                       request: &SphereDistanceRequest) -> Result<SphereDistances> {
+        let tree = tree.map_or(ptr::null(), Octree::as_raw);
+        self.with_world(world, |query| query.distance_spheres_tree(tree, spheres, request))
+    }
+
+    fn distance_spheres_tree(&mut self, tree: *const sys::opx_octree, spheres: &[[f64; 4]],
+                             request: &SphereDistanceRequest) -> Result<SphereDistances> {
+        let n = spheres.len();
+        let mut out = SphereDistances { distance: vec![0.0; n], gradient: vec![[0.0; 3]; n], witness: vec![[0.0; 3]; n] };
+        if n == 0 {
+            return Ok(out);
+        }
+        let request = request.to_c();
+        // SAFETY: spheres holds n packed rows of 4 doubles, the outputs n
+        // doubles and n packed rows of 3; live handles (tree may be NULL
+        // with a world), the tree only read.
+        check(unsafe {
+            sys::opx_query_distance_spheres(self.as_raw_mut(), tree, spheres.as_ptr().cast(), n, 0, &request,
+                                            out.distance.as_mut_ptr(), out.gradient.as_mut_ptr().cast(),
+                                            out.witness.as_mut_ptr().cast(), n)
+        })?;
+        Ok(out)
     }
 }

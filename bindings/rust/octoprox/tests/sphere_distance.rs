@@ -1,0 +1,51 @@
+//! Query::distance_spheres: signed distances, gradients and witnesses
+//! against the one cell [0, 0.25]^3 and a world's ball, and bad input.
+mod common;
+
+use common::{one_cell_map, C0};
+use octoprox::{pose_at, ErrorKind, Query, QueryOptions, SphereDistanceRequest, World};
+
+#[test]
+fn outside_inside_and_truncated() {
+    let map = one_cell_map();
+    let mut query = Query::new(&QueryOptions::default()).unwrap();
+    let spheres = [[0.5, C0, C0, 0.1], [0.05, C0, C0, 0.0], [2.0, C0, C0, 0.1]];
+    let request = SphereDistanceRequest { max_distance: 0.5, ..Default::default() };
+    let got = query.distance_spheres(&map, &spheres, &request).unwrap();
+    assert!((got.distance[0] - 0.15).abs() < 1e-12);
+    assert_eq!(got.gradient[0], [1.0, 0.0, 0.0]);
+    assert!((got.witness[0][0] - 0.25).abs() < 1e-12);
+    assert!((got.distance[1] + 0.05).abs() < 1e-12);
+    assert_eq!(got.gradient[1], [-1.0, 0.0, 0.0]);
+    assert_eq!(got.distance[2], 0.5);
+    assert_eq!(got.gradient[2], [0.0; 3]);
+    assert!(got.witness[2][0].is_nan());
+    let threads = SphereDistanceRequest { max_threads: 0, ..request };
+    assert_eq!(query.distance_spheres(&map, &spheres, &threads).unwrap().distance, got.distance);
+}
+
+#[test]
+fn with_a_world() {
+    let mut world = World::new().unwrap();
+    world.add_sphere("ball", 0.2, &pose_at(1.0, C0, C0)).unwrap();
+    let mut query = Query::new(&QueryOptions::default()).unwrap();
+    let request = SphereDistanceRequest { max_distance: 1.0, ..Default::default() };
+    let got = query.distance_spheres_with_world(None, &world, &[[1.5, C0, C0, 0.1]], &request).unwrap();
+    assert!((got.distance[0] - 0.2).abs() < 1e-9);
+    let map = one_cell_map();
+    let got = query.distance_spheres_with_world(Some(&map), &world, &[[0.6, C0, C0, 0.0]], &request).unwrap();
+    assert!((got.distance[0] - 0.2).abs() < 1e-9);
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    let map = one_cell_map();
+    let mut query = Query::new(&QueryOptions::default()).unwrap();
+    let error = query.distance_spheres(&map, &[[0.0, 0.0, f64::NAN, 0.1]], &Default::default()).unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument);
+    assert!(error.message().contains("row 0"));
+    let bad = SphereDistanceRequest { max_distance: -1.0, ..Default::default() };
+    let error = query.distance_spheres(&map, &[[0.0, 0.0, 0.0, 0.1]], &bad).unwrap_err();
+    assert!(error.message().contains("max_distance"));
+    assert!(query.distance_spheres(&map, &[], &Default::default()).unwrap().distance.is_empty());
+}
