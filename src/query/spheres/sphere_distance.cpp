@@ -1,6 +1,7 @@
 #include "query/spheres/sphere_distance.hpp"
 
 #include "narrowphase/shape_pair.hpp"
+#include "query/spheres/grid_nearest.hpp"
 #include "query/spheres/map_nearest.hpp"
 #include "query/spheres/sphere_grid.hpp"
 
@@ -41,7 +42,11 @@ PartDistance map_distance(const SensorOctree &tree, const ObstacleGrid *grid, co
     PartDistance part;
     if (grid != nullptr && std::isfinite(bound) && sphere_surely_clear(*grid, center, bound)) return part;
     const OctreeView view = tree.view();
-    const NearestPiece obstacle = nearest_obstacle(view, center, bound * bound, settings);
+    // The grid holds whole cells: with extents the octree decides.
+    const bool cells = grid != nullptr && !settings.point_extents;
+    NearestPiece obstacle;
+    const bool by_grid = cells && grid_nearest_obstacle(*grid, view.resolution(), center, bound * bound, obstacle);
+    if (!by_grid) obstacle = nearest_obstacle(view, center, bound * bound, settings);
     if (!obstacle.found) return part;
     part.found = true;
     if (obstacle.squared > 0.0) {
@@ -50,7 +55,8 @@ PartDistance map_distance(const SensorOctree &tree, const ObstacleGrid *grid, co
         part.gradient = unit(center - obstacle.point);
         return part;
     }
-    const NearestPiece exit = nearest_free(view, center, settings);
+    const NearestPiece exit =
+        by_grid ? grid_nearest_free(*grid, view.resolution(), center) : nearest_free(view, center, settings);
     part.sdf = -std::sqrt(exit.squared);
     part.witness = exit.point;
     part.gradient = exit.squared > 0.0 ? unit(exit.point - center) : surface_normal(obstacle.box, exit.box);

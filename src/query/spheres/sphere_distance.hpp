@@ -34,8 +34,9 @@ struct SphereDistanceScratch {
     std::vector<int32_t> stack;
 };
 
-// tree, grid and world may each be null (grid: the map's obstacle grid
-// for settings.map, used only to skip spheres surely beyond max_distance).
+// tree, grid and world may each be null.  grid: the map's obstacle grid
+// for settings.map (unknown space free), which skips spheres surely beyond
+// max_distance and, for whole cells, answers in place of the octree.
 SphereDistance sphere_distance(const SensorOctree *tree, const ObstacleGrid *grid, const WorldIndex *world,
                                const Vec3 &center, double radius, const SphereDistanceSettings &settings,
                                SphereDistanceScratch &scratch);

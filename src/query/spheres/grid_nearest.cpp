@@ -1,0 +1,152 @@
+#include "query/spheres/grid_nearest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace octoprox {
+namespace {
+
+double squared_to(const Vec3 &at, const Aabb &box) {
+    const Vec3 gap = (box.lo - at).cwiseMax(at - box.hi).cwiseMax(0.0);
+    return gap.squaredNorm();
+}
+
+void offer(NearestPiece &best, const Vec3 &at, const Aabb &box) {
+    const double squared = squared_to(at, box);
+    if (!(squared < best.squared)) return;
+    best.found = true;
+    best.squared = squared;
+    best.point = at.cwiseMax(box.lo).cwiseMin(box.hi);
+    best.box = box;
+}
+
+// The keys [lo, lo + width) as a box, its faces as cell_box places them.
+Aabb key_box(const int32_t lo[3], int32_t width, double resolution) {
+    Aabb box;
+    for (int axis = 0; axis < 3; ++axis) {
+        box.lo[axis] = static_cast<double>(lo[axis] - kKeyCenter) * resolution;
+        box.hi[axis] = static_cast<double>(lo[axis] + width - kKeyCenter) * resolution;
+    }
+    return box;
+}
+
+class Rings {
+public:
+    Rings(const ObstacleGrid &grid, double resolution, const Vec3 &at) : grid_(grid), resolution_(resolution), at_(at) {}
+
+    // The centre's brick (relative to the grid's first); false outside
+    // the map's keys.
+    bool locate() {
+        const double per_cell = 1.0 / resolution_;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double key = std::floor(at_[axis] * per_cell) + kKeyCenter;
+            if (!(key >= 0.0 && key < 65536.0)) return false;
+            center_[axis] = (static_cast<int32_t>(key) - grid_.origin()[axis]) >> 2;
+        }
+        return true;
+    }
+
+    // The first ring holding a brick of the grid.
+    int32_t first_ring() const {
+        int32_t ring = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            ring = std::max({ring, -center_[axis], center_[axis] - (grid_.bricks()[axis] - 1)});
+        return ring;
+    }
+
+    // Calls brick(b, box) for the grid's bricks ring by ring from `first`,
+    // skipping bricks whose box is not nearer than the best, until a
+    // ring's lower bound (4 (s - 1) cells) reaches the best or `last`.
+    template <class Brick>
+    void visit(int32_t first, int32_t last, NearestPiece &best, Brick &&brick) const {
+        for (int32_t s = first; s <= last; ++s) {
+            const double gap = 4.0 * (s - 1) * resolution_;
+            if (s >= 1 && !(gap * gap < best.squared)) return;
+            for (int32_t dz = -s; dz <= s; ++dz)
+                for (int32_t dy = -s; dy <= s; ++dy) {
+                    const bool face = std::abs(dz) == s || std::abs(dy) == s;
+                    for (int32_t dx = -s; dx <= s; dx += face || s == 0 ? 1 : 2 * s) {
+                        const int32_t b[3] = {center_[0] + dx, center_[1] + dy, center_[2] + dz};
+                        if (!inside(b)) continue;
+                        const int32_t lo[3] = {grid_.origin()[0] + 4 * b[0], grid_.origin()[1] + 4 * b[1],
+                                               grid_.origin()[2] + 4 * b[2]};
+                        const Aabb box = key_box(lo, 4, resolution_);
+                        if (!(squared_to(at_, box) < best.squared)) continue;
+                        brick(b, lo, best);
+                    }
+                }
+        }
+    }
+
+    // Every cell of `cells` (bits of a brick whose first key is lo), offered.
+    void offer_cells(uint64_t cells, const int32_t lo[3], NearestPiece &best) const {
+        for (; cells != 0; cells &= cells - 1) {
+            const int c = __builtin_ctzll(cells);
+            const int32_t key[3] = {lo[0] + (c & 3), lo[1] + ((c >> 2) & 3), lo[2] + (c >> 4)};
+            offer(best, at_, key_box(key, 1, resolution_));
+        }
+    }
+
+    const ObstacleGrid &grid() const { return grid_; }
+    double resolution() const { return resolution_; }
+    const Vec3 &at() const { return at_; }
+
+private:
+    bool inside(const int32_t b[3]) const {
+        for (int axis = 0; axis < 3; ++axis)
+            if (b[axis] < 0 || b[axis] >= grid_.bricks()[axis]) return false;
+        return true;
+    }
+
+    const ObstacleGrid &grid_;
+    double resolution_;
+    const Vec3 &at_;
+    int32_t center_[3] = {0, 0, 0};
+};
+
+}  // namespace
+
+bool grid_nearest_obstacle(const ObstacleGrid &grid, double resolution, const Vec3 &at, double bound_squared,
+                           NearestPiece &out) {
+    const double reach = std::sqrt(bound_squared) / resolution;
+    if (!(reach <= kGridSearchCells)) return false;
+    Rings rings(grid, resolution, at);
+    if (!rings.locate()) return false;
+    out = NearestPiece{};
+    out.squared = bound_squared;
+    // Ring s's bricks are at least 4 (s - 1) cells away: none beyond this.
+    const int32_t last = static_cast<int32_t>(reach / 4.0) + 2;
+    rings.visit(rings.first_ring(), last, out, [&](const int32_t b[3], const int32_t lo[3], NearestPiece &best) {
+        const uint64_t word = grid.word(b);
+        if (word != 0) rings.offer_cells(word, lo, best);
+    });
+    return true;
+}
+
+NearestPiece grid_nearest_free(const ObstacleGrid &grid, double resolution, const Vec3 &at) {
+    NearestPiece best;
+    // Beyond the grid's box every cell is free: the nearest point of its faces.
+    int32_t lo[3];
+    for (int axis = 0; axis < 3; ++axis) lo[axis] = grid.origin()[axis];
+    const Aabb box = key_box(lo, 0, resolution);
+    Aabb whole = box;
+    for (int axis = 0; axis < 3; ++axis)
+        whole.hi[axis] = static_cast<double>(lo[axis] + 4 * grid.bricks()[axis] - kKeyCenter) * resolution;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            Aabb face{at, at};
+            face.lo[axis] = face.hi[axis] = side == 0 ? whole.lo[axis] : whole.hi[axis];
+            offer(best, at, face);
+        }
+    Rings rings(grid, resolution, at);
+    if (!rings.locate()) return best;  // not reached: the centre is in a cell of the grid
+    rings.visit(0, INT32_MAX - 1, best, [&](const int32_t b[3], const int32_t lo_key[3], NearestPiece &near) {
+        const uint64_t word = grid.word(b);
+        if (word == 0) offer(near, at, key_box(lo_key, 4, resolution));
+        else rings.offer_cells(~word, lo_key, near);
+    });
+    return best;
+}
+
+}  // namespace octoprox
