@@ -55,37 +55,61 @@ public:
         return ring;
     }
 
-    // Calls brick(b, box) for the grid's bricks ring by ring from `first`,
+    // Calls brick(word, first key) for the grid's bricks whose word is
+    // wanted, ring by ring from `first`,
     // skipping bricks whose box is not nearer than the best, until a
     // ring's lower bound (4 (s - 1) cells) reaches the best or `last`.
-    template <class Brick>
-    void visit(int32_t first, int32_t last, NearestPiece &best, Brick &&brick) const {
+    template <class Wanted, class Brick>
+    void visit(int32_t first, int32_t last, NearestPiece &best, Wanted &&wanted, Brick &&brick) const {
         for (int32_t s = first; s <= last; ++s) {
             const double gap = 4.0 * (s - 1) * resolution_;
             if (s >= 1 && !(gap * gap < best.squared)) return;
-            for (int32_t dz = -s; dz <= s; ++dz)
-                for (int32_t dy = -s; dy <= s; ++dy) {
+            // Only the bricks within the best distance's key box, and in the grid.
+            int32_t lo[3], hi[3];
+            if (!reach_box(best.squared, lo, hi)) return;
+            const int32_t z0 = std::max(-s, lo[2]), z1 = std::min(s, hi[2]);
+            const int32_t y0 = std::max(-s, lo[1]), y1 = std::min(s, hi[1]);
+            const int32_t x0 = std::max(-s, lo[0]), x1 = std::min(s, hi[0]);
+            for (int32_t dz = z0; dz <= z1; ++dz)
+                for (int32_t dy = y0; dy <= y1; ++dy) {
                     const bool face = std::abs(dz) == s || std::abs(dy) == s;
-                    for (int32_t dx = -s; dx <= s; dx += face || s == 0 ? 1 : 2 * s) {
+                    for (int32_t dx = face ? x0 : -s; dx <= x1; dx += face || s == 0 ? 1 : 2 * s) {
+                        if (dx < x0) continue;
                         const int32_t b[3] = {center_[0] + dx, center_[1] + dy, center_[2] + dz};
-                        if (!inside(b)) continue;
-                        const int32_t lo[3] = {grid_.origin()[0] + 4 * b[0], grid_.origin()[1] + 4 * b[1],
-                                               grid_.origin()[2] + 4 * b[2]};
-                        const Aabb box = key_box(lo, 4, resolution_);
-                        if (!(squared_to(at_, box) < best.squared)) continue;
-                        brick(b, lo, best);
+                        const uint64_t word = grid_.word(b);
+                        if (!wanted(word)) continue;
+                        const int32_t first_key[3] = {grid_.origin()[0] + 4 * b[0], grid_.origin()[1] + 4 * b[1],
+                                                      grid_.origin()[2] + 4 * b[2]};
+                        if (!(squared_to(at_, key_box(first_key, 4, resolution_)) < best.squared)) continue;
+                        brick(word, first_key, best);
                     }
                 }
         }
     }
 
-    // Every cell of `cells` (bits of a brick whose first key is lo), offered.
+    // The nearest cell of `cells` (bits of the brick whose first key is
+    // lo), offered: per axis the gaps to the brick's four layers, squared,
+    // so a cell costs three loads and two additions; the winner's box is
+    // then measured as every piece is.
     void offer_cells(uint64_t cells, const int32_t lo[3], NearestPiece &best) const {
+        double gap[3][4];
+        for (int axis = 0; axis < 3; ++axis)
+            for (int i = 0; i < 4; ++i) {
+                const double low = static_cast<double>(lo[axis] + i - kKeyCenter) * resolution_;
+                const double high = static_cast<double>(lo[axis] + i + 1 - kKeyCenter) * resolution_;
+                const double g = std::max({low - at_[axis], at_[axis] - high, 0.0});
+                gap[axis][i] = g * g;
+            }
+        double nearest = best.squared;
+        int winner = -1;
         for (; cells != 0; cells &= cells - 1) {
             const int c = __builtin_ctzll(cells);
-            const int32_t key[3] = {lo[0] + (c & 3), lo[1] + ((c >> 2) & 3), lo[2] + (c >> 4)};
-            offer(best, at_, key_box(key, 1, resolution_));
+            const double squared = gap[0][c & 3] + gap[1][(c >> 2) & 3] + gap[2][c >> 4];
+            if (squared < nearest) nearest = squared, winner = c;
         }
+        if (winner < 0) return;
+        const int32_t key[3] = {lo[0] + (winner & 3), lo[1] + ((winner >> 2) & 3), lo[2] + (winner >> 4)};
+        offer(best, at_, key_box(key, 1, resolution_));
     }
 
     const ObstacleGrid &grid() const { return grid_; }
@@ -93,9 +117,20 @@ public:
     const Vec3 &at() const { return at_; }
 
 private:
-    bool inside(const int32_t b[3]) const {
-        for (int axis = 0; axis < 3; ++axis)
-            if (b[axis] < 0 || b[axis] >= grid_.bricks()[axis]) return false;
+    // The bricks (offsets from the centre's) of the grid that hold keys
+    // within sqrt(squared) of the centre (and a cell more, for rounding);
+    // false when none does.
+    bool reach_box(double squared, int32_t lo[3], int32_t hi[3]) const {
+        const double reach = std::sqrt(squared) / resolution_ + 1.0;
+        const double per_cell = 1.0 / resolution_;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double at = at_[axis] * per_cell + kKeyCenter - grid_.origin()[axis];
+            const double low = std::max(std::floor((at - reach) / 4.0), -1.0);
+            const double high = std::min(std::floor((at + reach) / 4.0), double(grid_.bricks()[axis]));
+            lo[axis] = std::max(static_cast<int32_t>(low), 0) - center_[axis];
+            hi[axis] = std::min(static_cast<int32_t>(high), grid_.bricks()[axis] - 1) - center_[axis];
+            if (lo[axis] > hi[axis]) return false;
+        }
         return true;
     }
 
@@ -117,10 +152,9 @@ bool grid_nearest_obstacle(const ObstacleGrid &grid, double resolution, const Ve
     out.squared = bound_squared;
     // Ring s's bricks are at least 4 (s - 1) cells away: none beyond this.
     const int32_t last = static_cast<int32_t>(reach / 4.0) + 2;
-    rings.visit(rings.first_ring(), last, out, [&](const int32_t b[3], const int32_t lo[3], NearestPiece &best) {
-        const uint64_t word = grid.word(b);
-        if (word != 0) rings.offer_cells(word, lo, best);
-    });
+    rings.visit(
+        rings.first_ring(), last, out, [](uint64_t word) { return word != 0; },
+        [&](uint64_t word, const int32_t lo[3], NearestPiece &best) { rings.offer_cells(word, lo, best); });
     return true;
 }
 
@@ -141,11 +175,12 @@ NearestPiece grid_nearest_free(const ObstacleGrid &grid, double resolution, cons
         }
     Rings rings(grid, resolution, at);
     if (!rings.locate()) return best;  // not reached: the centre is in a cell of the grid
-    rings.visit(0, INT32_MAX - 1, best, [&](const int32_t b[3], const int32_t lo_key[3], NearestPiece &near) {
-        const uint64_t word = grid.word(b);
-        if (word == 0) offer(near, at, key_box(lo_key, 4, resolution));
-        else rings.offer_cells(~word, lo_key, near);
-    });
+    rings.visit(
+        0, INT32_MAX - 1, best, [](uint64_t word) { return ~word != 0; },
+        [&](uint64_t word, const int32_t lo_key[3], NearestPiece &near) {
+            if (word == 0) offer(near, at, key_box(lo_key, 4, resolution));
+            else rings.offer_cells(~word, lo_key, near);
+        });
     return best;
 }
 
