@@ -128,6 +128,64 @@ OPX_API opx_status opx_query_distance_spheres(opx_query *query, const opx_octree
                                               const opx_sphere_distance_request *request, double *out_distance,
                                               double *out_gradient, double *out_witness, size_t capacity);
 
+/* ---- Trajectory cost for optimizers ------------------------------------ */
+
+/** What opx_query_trajectory_cost takes as obstacles, its activation
+ * distance and its rows' order. */
+typedef struct opx_trajectory_cost_request {
+    uint32_t struct_size;
+    int32_t unknown_policy;     /**< OPX_UNKNOWN_FREE (default) or OPX_UNKNOWN_OCCUPIED */
+    double occupancy_threshold; /**< as in opx_collision_request; 0: the octree's */
+    int32_t obstacle_geometry;  /**< OPX_OBSTACLE_CELLS (default) or OPX_OBSTACLE_POINT_EXTENTS */
+    /** OPX_JOINTS_BY_COUNT (0, default), OPX_JOINTS_MODEL or
+     * OPX_JOINTS_ACTIVE (batch.h): what a row of joint_count values holds. */
+    int32_t joint_order;
+    /** eps, metres, > 0 and finite (default 0.05): spheres farther than
+     * this from every obstacle cost nothing. */
+    double activation;
+} opx_trajectory_cost_request;
+
+#define OPX_TRAJECTORY_COST_REQUEST_INIT \
+    {sizeof(opx_trajectory_cost_request), OPX_UNKNOWN_FREE, 0.0, OPX_OBSTACLE_CELLS, 0, 0.05}
+OPX_API opx_status opx_trajectory_cost_request_init(opx_trajectory_cost_request *request, size_t size);
+
+/**
+ * The obstacle cost of a trajectory of a robot made of spheres (a link set
+ * made from a spherized URDF: every shape of every link, attached objects'
+ * too, a sphere; else OPX_ERROR_INVALID_ARGUMENT), and its gradient.
+ * `positions` holds waypoint_count rows of joint_count joint values
+ * (radians or metres), `stride` bytes apart (0: packed), ordered as
+ * request->joint_order says, as opx_query_check_configurations reads them;
+ * base_pose (may be NULL: the identity) places the robot's root link in
+ * the map frame (x y z qx qy qz qw).  The link set does not move.
+ *
+ * The cost is the sum over waypoints and enabled spheres of CHOMP's
+ * penalty c(d) of the sphere's signed distance d (opx_query_distance_spheres
+ * with max_distance = eps = request->activation, against the map and the
+ * query's world):
+ *   c(d) = -d + eps / 2            for d < 0,
+ *   c(d) = (d - eps)^2 / (2 eps)   for 0 <= d < eps,
+ *   c(d) = 0                       for d >= eps,
+ * continuous with a continuous slope.  out_gradient (may be NULL) gets
+ * waypoint_count rows of joint_count doubles, packed, in the rows' order:
+ * the derivative of the cost with respect to each joint value, through
+ * each sphere's distance gradient and its link's Jacobian (a revolute
+ * joint moves a centre c by axis x (c - joint origin), a prismatic one
+ * along its axis).  A mimic joint's share goes to the joint it follows,
+ * times its multiplier; with OPX_JOINTS_MODEL rows, mimic and fixed
+ * joints' entries are 0.  The gradient is exact where the distances are
+ * differentiable (spheres.h above: the witness's direction elsewhere).
+ * out_gradient holds `capacity` rows: less than waypoint_count is
+ * OPX_ERROR_BUFFER_TOO_SMALL.  Self-collision is not part of the cost.
+ * Not-finite joint values are invalid arguments naming the row; waypoint
+ * count 0 is one too.
+ */
+OPX_API opx_status opx_query_trajectory_cost(opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                             const double *positions, size_t waypoint_count, size_t joint_count,
+                                             size_t stride, const opx_pose *base_pose,
+                                             const opx_trajectory_cost_request *request, double *out_cost,
+                                             double *out_gradient, size_t capacity);
+
 #ifdef __cplusplus
 }
 #endif
