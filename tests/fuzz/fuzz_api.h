@@ -104,5 +104,6 @@ void op_query_boxes(fuzz_api *api);
 
 /* fuzz_api_batch.c */
 void op_query_batch(fuzz_api *api);
+void op_query_trajectory_cost(fuzz_api *api);
 
 #endif /* OPX_FUZZ_API_H */

@@ -36,6 +36,7 @@ enum fuzz_api_op {
     OP_QUERY_SPHERES,
     OP_QUERY_BATCH,
     OP_QUERY_SPHERE_DISTANCE,
+    OP_QUERY_TRAJECTORY_COST,
     OP_COUNT
 };
 

@@ -173,6 +173,8 @@ void write_api_seeds(const char *out_dir) {
         {OP_ROBOT_LOAD, BATCH_OF_ROBOT, OP_OCTREE_CLEAR, BATCH_OF_ROBOT, OP_ROBOT_JOINTS, OP_QUERY_BATCH},
         {OP_QUERY_SPHERE_DISTANCE, OP_OCTREE_EXERCISE, OP_QUERY_SPHERE_DISTANCE, OP_OCTREE_CLEAR,
          OP_QUERY_SPHERE_DISTANCE, OP_QUERY_SPHERES},
+        {LOAD_SPHERE_ROBOT, OP_QUERY_TRAJECTORY_COST, OP_OCTREE_EXERCISE, OP_QUERY_TRAJECTORY_COST, OP_ROBOT_JOINTS,
+         OP_QUERY_TRAJECTORY_COST},
     };
     const size_t tails = sizeof tail_ops / sizeof tail_ops[0];
     for (size_t s = 0; s < 2 * tails; ++s) {

@@ -167,6 +167,15 @@ class SphereDistanceRequest(Struct):
                 ("max_threads", c_uint32), ("max_distance", c_double)]
 
 
+class TrajectoryCostRequest(Struct):
+    """The options of Query.trajectory_cost: unknown_policy,
+    occupancy_threshold, obstacle_geometry, joint_order, activation (eps,
+    m, > 0: CHOMP's activation distance)."""
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("obstacle_geometry", c_int32),
+                ("joint_order", c_int32), ("activation", c_double)]
+
+
 class SelfDistanceRequest(Struct):
     """The options of Query.self_distance: signed_distance (overlap as
     minus the deepest penetration), cutoff (m; pairs farther are not
@@ -269,6 +278,7 @@ typed_fields(SelfCollisionResult, collided=bool, truncated=bool)
 typed_fields(SelfDistanceRequest, signed_distance=bool)
 typed_fields(SphereRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
 typed_fields(SphereDistanceRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
+typed_fields(TrajectoryCostRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
 typed_fields(SelfDistanceResult, found=bool, collided=bool)
 typed_fields(PathRequest, unknown_policy=_POLICY, compute_distance=bool, compute_cost=bool,
              obstacle_geometry=_GEOMETRY)

@@ -1,7 +1,7 @@
 """Many configurations and joint-space motions per call (batch.h):
 Query.check_configurations, check_motion and check_motions, and many
-spheres per call (spheres.h): Query.collide_spheres and
-Query.distance_spheres (Query inherits them).
+spheres per call (spheres.h): Query.collide_spheres,
+Query.distance_spheres and Query.trajectory_cost (Query inherits them).
 
 The robot is a LinkSet made from URDF.  Joint vectors are rows of the
 active joints (LinkSet.active_joint_names: the moving joints that mimic
@@ -49,6 +49,8 @@ _MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshol
 _MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
             "occupancy_threshold", "obstacle_geometry", "joint_order")
 _SPHERES = ("unknown_policy", "occupancy_threshold", "obstacle_geometry")
+_TRAJECTORY = ("activation", "unknown_policy", "occupancy_threshold", "obstacle_geometry",
+               "joint_order")
 _SPHERE_DISTANCES = ("max_distance", "max_threads", "unknown_policy", "occupancy_threshold",
                      "obstacle_geometry")
 
@@ -107,6 +109,8 @@ class BatchQueries:
         self._motion_requests = RequestCache(s.MotionRequest, _MOTION, "Query.check_motion")
         self._motions_requests = RequestCache(s.MotionRequest, _MOTIONS, "Query.check_motions")
         self._sphere_requests = RequestCache(s.SphereRequest, _SPHERES, "Query.collide_spheres")
+        self._trajectory_requests = RequestCache(s.TrajectoryCostRequest, _TRAJECTORY,
+                                                 "Query.trajectory_cost")
         self._sphere_distance_requests = RequestCache(s.SphereDistanceRequest, _SPHERE_DISTANCES,
                                                       "Query.distance_spheres")
 
@@ -188,6 +192,41 @@ class BatchQueries:
             self, tree, rows.ctypes.data, n, 0, request, distance.ctypes.data, gradient.ctypes.data,
             witness.ctypes.data, n))
         return distance, gradient, witness
+
+    @api("Query.trajectory_cost")
+    def trajectory_cost(self, tree: Optional[Octree], robot: LinkSet, q: ArrayLike,
+                        activation: float = 0.05, world: Optional[World] = None, *,
+                        base_pose: Optional[PoseLike] = None,
+                        unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                        occupancy_threshold: float = 0.0,
+                        obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                        joint_order: JointOrderLike = JointOrder.BY_COUNT
+                        ) -> Tuple[float, np.ndarray]:
+        """The obstacle cost of a trajectory of a robot made of spheres (a
+        LinkSet from a spherized URDF) and its gradient, for trajectory
+        optimizers (spheres.h: opx_query_trajectory_cost states the rules).
+
+        q: a (T, dof) array of waypoints (active joints or every joint, as
+          joint_order says). activation: eps (m); the cost sums CHOMP's
+          penalty of each sphere's signed distance d: -d + eps/2 inside,
+          (d - eps)^2 / (2 eps) up to eps, 0 beyond.
+
+        Returns (cost, gradient (T, dof)).  Raises InvalidArgumentError for
+        a robot with a shape that is not a sphere.
+        """
+        _check_operands(tree, robot, "Query.trajectory_cost", world)
+        rows = joint_rows(q, "Query.trajectory_cost")
+        n = len(rows)
+        gradient = np.zeros(rows.shape)
+        cost = ctypes.c_double(0.0)
+        base = None if base_pose is None else make_pose(base_pose)
+        request = self._trajectory_requests.lookup(
+            (activation, unknown_policy, occupancy_threshold, obstacle_geometry, joint_order))
+        call_with_world(self, world, "Query.trajectory_cost", lambda: lib.opx_query_trajectory_cost(
+            self, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows),
+            None if base is None else ctypes.addressof(base), request, ctypes.addressof(cost),
+            gradient.ctypes.data, n))
+        return cost.value, gradient
 
     @api("Query.check_configurations")
     def check_configurations(self, tree: Optional[Octree], robot: LinkSet, q: ArrayLike,

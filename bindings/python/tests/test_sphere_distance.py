@@ -67,3 +67,46 @@ class DistanceSpheres(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+ARM = """<robot name='arm'>
+<link name='base'><collision><geometry><sphere radius='0.05'/></geometry></collision></link>
+<link name='l1'><collision><origin xyz='0 0 0.15'/><geometry><sphere radius='0.06'/></geometry></collision></link>
+<link name='l2'><collision><origin xyz='0.3 0 0'/><geometry><sphere radius='0.05'/></geometry></collision></link>
+<joint name='j1' type='revolute'><parent link='base'/><child link='l1'/><origin xyz='0 0 0.1'/>
+<axis xyz='0 0 1'/><limit lower='-3' upper='3' effort='1' velocity='1'/></joint>
+<joint name='j2' type='revolute'><parent link='l1'/><child link='l2'/><origin xyz='0 0 0.3'/>
+<axis xyz='0 1 0'/><limit lower='-3' upper='3' effort='1' velocity='1'/></joint>
+</robot>"""
+
+
+class TrajectoryCost(unittest.TestCase):
+    def test_cost_and_gradient_against_central_differences(self):
+        tree = octoprox.Octree(resolution=0.04)
+        rng = np.random.default_rng(3)
+        tree.insert_points(rng.uniform([-0.6, -0.6, -0.2], [0.6, 0.6, 0.8], (800, 3)),
+                           mode=octoprox.INSERT_ENDPOINTS)
+        arm = octoprox.LinkSet.from_urdf_string(ARM)
+        query = octoprox.Query()
+        q = rng.uniform(-1.2, 1.2, (6, 2))
+        cost, gradient = query.trajectory_cost(tree, arm, q, activation=0.1)
+        self.assertGreater(cost, 0.0)
+        self.assertEqual(gradient.shape, (6, 2))
+        h, checked = 1e-6, 0
+        for w in range(6):
+            for j in range(2):
+                plus, minus = q.copy(), q.copy()
+                plus[w, j] += h
+                minus[w, j] -= h
+                fd = (query.trajectory_cost(tree, arm, plus, 0.1)[0] -
+                      query.trajectory_cost(tree, arm, minus, 0.1)[0]) / (2 * h)
+                if abs(fd - gradient[w, j]) <= 1e-6 * max(abs(fd), 1e-3):
+                    checked += 1
+        self.assertGreaterEqual(checked, 10)  # all but kinks
+
+    def test_a_robot_not_all_spheres(self):
+        boxes = octoprox.LinkSet.from_urdf_string(
+            "<robot name='b'><link name='a'><collision><geometry><box size='0.1 0.1 0.1'/>"
+            "</geometry></collision></link></robot>")
+        with self.assertRaisesRegex(octoprox.OctoproxError, "sphere"):
+            octoprox.Query().trajectory_cost(one_cell_map(), boxes, np.zeros((1, 0)))

@@ -17,9 +17,10 @@
 //! assert_eq!(query.collide_spheres(&map, &spheres, &SphereRequest::default())?, [true, false]);
 //! # Ok::<(), octoprox::Error>(())
 //! ```
-use crate::enums::{is_set, ObstacleGeometry, UnknownPolicy};
+use crate::enums::{is_set, JointOrder, ObstacleGeometry, UnknownPolicy};
 use crate::error::{check, Result};
-use crate::{sys, Octree, Query, World};
+use crate::error::Error;
+use crate::{sys, LinkSet, Octree, Pose, Query, World};
 use std::ptr;
 
 /// What [`Query::collide_spheres`] takes as obstacles.
@@ -170,6 +171,97 @@ impl Query {
             sys::opx_query_distance_spheres(self.as_raw_mut(), tree, spheres.as_ptr().cast(), n, 0, &request,
                                             out.distance.as_mut_ptr(), out.gradient.as_mut_ptr().cast(),
                                             out.witness.as_mut_ptr().cast(), n)
+        })?;
+        Ok(out)
+    }
+}
+
+/// What [`Query::trajectory_cost`] takes as obstacles, its activation
+/// distance and the rows' order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrajectoryCostRequest {
+    /// What unknown space is (default [`UnknownPolicy::Free`]).
+    pub unknown_policy: UnknownPolicy,
+    /// As [`SphereRequest::occupancy_threshold`].
+    pub occupancy_threshold: f64,
+    /// What an occupied cell is as an obstacle.
+    pub obstacle_geometry: ObstacleGeometry,
+    /// What a row holds (default [`JointOrder::ByCount`]).
+    pub joint_order: JointOrder,
+    /// CHOMP's activation distance eps, metres (> 0, finite; default 0.05).
+    pub activation: f64,
+}
+
+impl Default for TrajectoryCostRequest {
+    fn default() -> TrajectoryCostRequest {
+        let c = sys::opx_trajectory_cost_request::default();
+        TrajectoryCostRequest {
+            unknown_policy: UnknownPolicy::from_raw(c.unknown_policy).unwrap_or_default(),
+            occupancy_threshold: c.occupancy_threshold,
+            obstacle_geometry: ObstacleGeometry::from_raw(c.obstacle_geometry).unwrap_or_default(),
+            joint_order: JointOrder::from_raw(c.joint_order).unwrap_or_default(),
+            activation: c.activation,
+        }
+    }
+}
+
+impl TrajectoryCostRequest {
+    fn to_c(self) -> sys::opx_trajectory_cost_request {
+        sys::opx_trajectory_cost_request {
+            unknown_policy: self.unknown_policy.raw(),
+            occupancy_threshold: self.occupancy_threshold,
+            obstacle_geometry: self.obstacle_geometry.raw(),
+            joint_order: self.joint_order.raw(),
+            activation: self.activation,
+            ..Default::default()
+        }
+    }
+}
+
+/// The answer of [`Query::trajectory_cost`].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TrajectoryCost {
+    /// The summed penalty of every sphere at every waypoint.
+    pub cost: f64,
+    /// d cost / d joint value, in the rows' layout (waypoints x joints).
+    pub gradient: Vec<f64>,
+}
+
+impl Query {
+    /// The obstacle cost of a trajectory of a robot made of spheres and its
+    /// gradient (`spheres.h`, `opx_query_trajectory_cost`, states the
+    /// penalty): `rows` holds waypoints of `joints` values each, the root
+    /// link at `base` (map frame; `None`: the origin).
+    pub fn trajectory_cost(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64], joints: usize,
+                           base: Option<&Pose>, request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
+        self.trajectory_cost_tree(tree.as_raw(), robot, rows, joints, base, request)
+    }
+
+    /// [`Query::trajectory_cost`] against the octree (`None`: no map) and
+    /// the enabled objects of `world` together.
+    pub fn trajectory_cost_with_world(&mut self, tree: Option<&Octree>, world: &World, robot: &LinkSet,
+                                      rows: &[f64], joints: usize, base: Option<&Pose>,
+                                      request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
+        let tree = tree.map_or(ptr::null(), Octree::as_raw);
+        self.with_world(world, |query| query.trajectory_cost_tree(tree, robot, rows, joints, base, request))
+    }
+
+    fn trajectory_cost_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, rows: &[f64], joints: usize,
+                            base: Option<&Pose>, request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
+        if joints == 0 || rows.len() % joints != 0 {
+            return Err(Error::invalid(format!(
+                "Query::trajectory_cost: {} values are not rows of {joints} joints", rows.len())));
+        }
+        let waypoints = rows.len() / joints;
+        let mut out = TrajectoryCost { cost: 0.0, gradient: vec![0.0; rows.len()] };
+        let request = request.to_c();
+        let base = base.map_or(ptr::null(), |b| b as *const Pose);
+        // SAFETY: rows holds `waypoints` packed rows of `joints` doubles,
+        // the gradient as many; live handles (tree may be NULL with a
+        // world), only read.
+        check(unsafe {
+            sys::opx_query_trajectory_cost(self.as_raw_mut(), tree, robot.as_raw(), rows.as_ptr(), waypoints, joints,
+                                           0, base, &request, &mut out.cost, out.gradient.as_mut_ptr(), waypoints)
         })?;
         Ok(out)
     }

@@ -49,3 +49,34 @@ fn bad_input_is_an_error() {
     assert!(error.message().contains("max_distance"));
     assert!(query.distance_spheres(&map, &[], &Default::default()).unwrap().distance.is_empty());
 }
+
+const ARM: &str = "<robot name='arm'>\
+<link name='base'><collision><geometry><sphere radius='0.05'/></geometry></collision></link>\
+<link name='l1'><collision><origin xyz='0.3 0 0'/><geometry><sphere radius='0.05'/></geometry></collision></link>\
+<joint name='j1' type='revolute'><parent link='base'/><child link='l1'/><origin xyz='0 0 0.1'/>\
+<axis xyz='0 0 1'/><limit lower='-3' upper='3' effort='1' velocity='1'/></joint></robot>";
+
+#[test]
+fn trajectory_cost_and_its_gradient() {
+    use octoprox::{LinkSet, TrajectoryCostRequest, UrdfOptions};
+    let mut map = common::new_tree(0.04);
+    map.insert_points(&[[0.0f64, 0.35, 0.1]], &common::sensor_at(0.0, 0.0, 0.0, octoprox::InsertMode::Endpoints))
+        .unwrap();
+    let arm = LinkSet::from_urdf_string(ARM, &UrdfOptions::default()).unwrap();
+    let mut query = Query::new(&QueryOptions::default()).unwrap();
+    let request = TrajectoryCostRequest { activation: 0.1, ..Default::default() };
+    let q = [1.4, 1.5];
+    let got = query.trajectory_cost(&map, &arm, &q, 1, None, &request).unwrap();
+    assert!(got.cost > 0.0);
+    let h = 1e-6;
+    for w in 0..2 {
+        let (mut plus, mut minus) = (q, q);
+        plus[w] += h;
+        minus[w] -= h;
+        let fd = (query.trajectory_cost(&map, &arm, &plus, 1, None, &request).unwrap().cost
+            - query.trajectory_cost(&map, &arm, &minus, 1, None, &request).unwrap().cost)
+            / (2.0 * h);
+        assert!((fd - got.gradient[w]).abs() <= 1e-6 * fd.abs().max(1e-3), "{fd} vs {}", got.gradient[w]);
+    }
+    assert!(query.trajectory_cost(&map, &arm, &q, 0, None, &request).is_err());
+}
