@@ -7,7 +7,9 @@
 //  - FCL's sphere-to-octree distance (fcl::distance of an fcl::Sphere and
 //    the fcl::OcTree of the same cells; unsigned, no gradient);
 //  - the grid pipeline: an exact EDT of the same cells over their box
-//    (build ms) and trilinear lookups of distance and gradient (ns).
+//    (build ms) and trilinear lookups of distance and gradient (ns);
+//  - opx_query_trajectory_cost of 32 waypoints of opx-bench-batch's
+//    50-sphere 7-joint arm based in the middle of the occupied box (us).
 // Rows and timings are interleaved round by round; --json FILE writes them.
 //   opx-bench-spheres [--quick] [--json FILE] [--spheres N]
 #include <cmath>
@@ -19,6 +21,7 @@
 
 #include <octoprox/octoprox.h>
 
+#include "arm_urdf.hpp"
 #include "bench_frame.hpp"
 #include "edt_reference.hpp"
 #include "fcl_distance.hpp"
@@ -115,6 +118,17 @@ double first_call_us(const opx_octree *tree, const std::vector<double> &rows) {
     });
 }
 
+// 32 waypoints from one random configuration to another, in model order.
+std::vector<double> trajectory(uint64_t seed) {
+    paper_tables::Rng rng(seed);
+    double from[batch_bench::kArmJoints], to[batch_bench::kArmJoints];
+    for (int j = 0; j < batch_bench::kArmJoints; ++j) from[j] = rng.uniform(-2.0, 2.0), to[j] = rng.uniform(-2.0, 2.0);
+    std::vector<double> rows;
+    for (int w = 0; w < 32; ++w)
+        for (int j = 0; j < batch_bench::kArmJoints; ++j) rows.push_back(from[j] + (to[j] - from[j]) * w / 31.0);
+    return rows;
+}
+
 void write_json(const std::string &path, const std::vector<Row> &rows, const bench::ThreadSpeed &start,
                 const bench::ThreadSpeed &end) {
     FILE *out = std::fopen(path.c_str(), "w");
@@ -177,7 +191,19 @@ int main(int argc, char **argv) {
 
     const paper_tables::OpxQueryPtr query = paper_tables::make_direct_query();
     std::vector<double> d(n), g(3 * n), w(3 * n), edt_d(n);
-    std::vector<double> opx, first, fcl, edt_build, edt_lookup;
+    std::vector<double> opx, first, fcl, edt_build, edt_lookup, trajectory_us;
+    opx_linkset *arm_raw = nullptr;
+    check_opx(opx_linkset_load_urdf_string(batch_bench::sphere_arm_urdf().c_str(), nullptr, &arm_raw),
+              "opx_linkset_load_urdf_string");
+    const paper_tables::OpxLinksetPtr arm(arm_raw);
+    opx_pose arm_base = OPX_POSE_IDENTITY;
+    for (int a = 0; a < 3; ++a) arm_base.position[a] = 0.5 * (stats.occupied_min[a] + stats.occupied_max[a]);
+    std::vector<std::vector<double>> trajectories;
+    for (uint64_t t = 0; t < 20; ++t) trajectories.push_back(trajectory(0x7A0u + t));
+    opx_trajectory_cost_request cost_request = OPX_TRAJECTORY_COST_REQUEST_INIT;
+    cost_request.activation = kActivation;
+    std::vector<double> cost_gradient(32 * batch_bench::kArmJoints);
+    double cost_sum = 0.0;
     for (int r = 0; r < rounds; ++r) {
         opx.push_back(opx_ns(query.get(), tree.get(), rows, d, g, w));
         first.push_back(first_call_us(tree.get(), rows));
@@ -198,6 +224,17 @@ int main(int argc, char **argv) {
                 edt_d[i] = std::min(grid->lookup(&rows[4 * i], gradient) - rows[4 * i + 3], kActivation);
             }
         }) / double(n));
+        trajectory_us.push_back(1e3 * paper_tables::time_once_ms([&] {
+            cost_sum = 0.0;
+            for (const std::vector<double> &rows_q : trajectories) {
+                double cost = 0.0;
+                check_opx(opx_query_trajectory_cost(query.get(), tree.get(), arm.get(), rows_q.data(), 32,
+                                                    batch_bench::kArmJoints, 0, &arm_base, &cost_request, &cost,
+                                                    cost_gradient.data(), 32),
+                          "opx_query_trajectory_cost");
+                cost_sum += cost;
+            }
+        }) / double(trajectories.size()));
     }
     (void)fcl_sphere;
     size_t inside = 0, truncated = 0;
@@ -209,14 +246,17 @@ int main(int argc, char **argv) {
     const bench::ThreadSpeed at_end = bench::measure_thread_speed();
     std::vector<Row> table = {
         {"opx_query_distance_spheres (distance, gradient, witness)", paper_tables::median(opx), NAN, n},
-        {"opx first call of 50 spheres after a new frame (us)", NAN, paper_tables::median(first) / 1e3, 50},
+        {"opx first call of 50 spheres after a new frame", NAN, paper_tables::median(first) / 1e3, 50},
         {"FCL fcl::distance sphere vs fcl::OcTree (unsigned, no gradient)", paper_tables::median(fcl), NAN, fcl_count},
         {"EDT reference: exact EDT of the frame's box (build)", NAN, paper_tables::median(edt_build), 0},
         {"EDT reference: trilinear distance + gradient lookups", paper_tables::median(edt_lookup), NAN, n},
+        {"opx_query_trajectory_cost: 32 waypoints x 50 spheres, cost + gradient", NAN,
+         paper_tables::median(trajectory_us) / 1e3, 32 * 50},
     };
     std::printf("%zu spheres of %g-%g m, activation %g m: %zu inside an obstacle (distance < 0), %zu truncated; "
                 "EDT grid %zux%zux%zu, its largest error outside: %.3g m\n",
                 n, kMinRadius, kMaxRadius, kActivation, inside, truncated, size[0], size[1], size[2], edt_error);
+    std::printf("trajectories: mean cost %.4g\n", cost_sum / 20.0);
     for (const Row &row : table)
         std::printf("%-66s %10.1f ns/sphere %10.3f ms\n", row.pipeline.c_str(), row.ns_per_sphere, row.ms);
     bench::print_thread_speeds(at_start, at_end);

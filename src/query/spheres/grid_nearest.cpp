@@ -40,11 +40,27 @@ public:
     bool locate() {
         const double per_cell = 1.0 / resolution_;
         for (int axis = 0; axis < 3; ++axis) {
-            const double key = std::floor(at_[axis] * per_cell) + kKeyCenter;
+            const double at = at_[axis] * per_cell + kKeyCenter;
+            const double key = std::floor(at);
             if (!(key >= 0.0 && key < 65536.0)) return false;
-            center_[axis] = (static_cast<int32_t>(key) - grid_.origin()[axis]) >> 2;
+            key_[axis] = static_cast<int32_t>(key);
+            center_[axis] = (key_[axis] - grid_.origin()[axis]) >> 2;
+            // The centre's gap to its brick's nearest face, in cells.
+            const double brick_lo = grid_.origin()[axis] + 4.0 * center_[axis];
+            inset_ = std::min({inset_, at - brick_lo, brick_lo + 4.0 - at});
         }
+        inset_ = std::max(inset_, 0.0);
         return true;
+    }
+
+    // The first ring that may hold an obstacle: the grid's clearance says
+    // the bricks within gap - 1 of the centre's are empty (clearance
+    // 4 (gap - 1) cells); outside the grid's box, its first ring.
+    int32_t first_obstacle_ring() const {
+        const int32_t outside = first_ring();
+        if (outside > 0) return outside;
+        const int32_t clearance = grid_.clearance(key_);
+        return clearance > 0 ? clearance / 4 + 1 : 0;
     }
 
     // The first ring holding a brick of the grid.
@@ -62,7 +78,8 @@ public:
     template <class Wanted, class Brick>
     void visit(int32_t first, int32_t last, NearestPiece &best, Wanted &&wanted, Brick &&brick) const {
         for (int32_t s = first; s <= last; ++s) {
-            const double gap = 4.0 * (s - 1) * resolution_;
+            // Ring s lies beyond the 2s - 1 bricks around the centre's.
+            const double gap = (4.0 * (s - 1) + inset_) * resolution_;
             if (s >= 1 && !(gap * gap < best.squared)) return;
             // Only the bricks within the best distance's key box, and in the grid.
             int32_t lo[3], hi[3];
@@ -138,6 +155,8 @@ private:
     double resolution_;
     const Vec3 &at_;
     int32_t center_[3] = {0, 0, 0};
+    int32_t key_[3] = {0, 0, 0};
+    double inset_ = 4.0;
 };
 
 }  // namespace
@@ -153,7 +172,7 @@ bool grid_nearest_obstacle(const ObstacleGrid &grid, double resolution, const Ve
     // Ring s's bricks are at least 4 (s - 1) cells away: none beyond this.
     const int32_t last = static_cast<int32_t>(reach / 4.0) + 2;
     rings.visit(
-        rings.first_ring(), last, out, [](uint64_t word) { return word != 0; },
+        rings.first_obstacle_ring(), last, out, [](uint64_t word) { return word != 0; },
         [&](uint64_t word, const int32_t lo[3], NearestPiece &best) { rings.offer_cells(word, lo, best); });
     return true;
 }
