@@ -19,6 +19,7 @@
 //! ```
 use crate::enums::{is_set, JointOrder, ObstacleGeometry, UnknownPolicy};
 use crate::error::{check, Result};
+use crate::batch::row_count;
 use crate::error::Error;
 use crate::{sys, LinkSet, Octree, Pose, Query, World};
 use std::ptr;
@@ -230,29 +231,30 @@ pub struct TrajectoryCost {
 impl Query {
     /// The obstacle cost of a trajectory of a robot made of spheres and its
     /// gradient (`spheres.h`, `opx_query_trajectory_cost`, states the
-    /// penalty): `rows` holds waypoints of `joints` values each, the root
-    /// link at `base` (map frame; `None`: the origin).
-    pub fn trajectory_cost(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64], joints: usize,
-                           base: Option<&Pose>, request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
-        self.trajectory_cost_tree(tree.as_raw(), robot, rows, joints, base, request)
+    /// penalty): `rows` holds waypoints of every joint's value in model
+    /// order (with `request.joint_order` [`JointOrder::Active`], of the
+    /// active joints'), the root link at `base` (map frame; `None`: the
+    /// origin).
+    pub fn trajectory_cost(&mut self, tree: &Octree, robot: &LinkSet, rows: &[f64], base: Option<&Pose>,
+                           request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
+        self.trajectory_cost_tree(tree.as_raw(), robot, rows, base, request)
     }
 
     /// [`Query::trajectory_cost`] against the octree (`None`: no map) and
     /// the enabled objects of `world` together.
     pub fn trajectory_cost_with_world(&mut self, tree: Option<&Octree>, world: &World, robot: &LinkSet,
-                                      rows: &[f64], joints: usize, base: Option<&Pose>,
-                                      request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
+                                      rows: &[f64], base: Option<&Pose>, request: &TrajectoryCostRequest)
+        -> Result<TrajectoryCost> {
         let tree = tree.map_or(ptr::null(), Octree::as_raw);
-        self.with_world(world, |query| query.trajectory_cost_tree(tree, robot, rows, joints, base, request))
+        self.with_world(world, |query| query.trajectory_cost_tree(tree, robot, rows, base, request))
     }
 
-    fn trajectory_cost_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, rows: &[f64], joints: usize,
+    fn trajectory_cost_tree(&mut self, tree: *const sys::opx_octree, robot: &LinkSet, rows: &[f64],
                             base: Option<&Pose>, request: &TrajectoryCostRequest) -> Result<TrajectoryCost> {
-        if joints == 0 || rows.len() % joints != 0 {
-            return Err(Error::invalid(format!(
-                "Query::trajectory_cost: {} values are not rows of {joints} joints", rows.len())));
+        let (waypoints, joints) = row_count(robot, rows, request.joint_order, "Query::trajectory_cost: rows")?;
+        if waypoints == 0 {
+            return Err(Error::invalid("Query::trajectory_cost: rows holds no waypoint".to_string()));
         }
-        let waypoints = rows.len() / joints;
         let mut out = TrajectoryCost { cost: 0.0, gradient: vec![0.0; rows.len()] };
         let request = request.to_c();
         let base = base.map_or(ptr::null(), |b| b as *const Pose);
