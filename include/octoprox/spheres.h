@@ -16,6 +16,11 @@
  * frame at 2 cm.  Maps whose obstacles span more than 2^30 cells
  * (at 2 cm, a box about 20 m a side), and spheres wider than 60 cells,
  * take a descent of the octree instead, with the same answers.
+ *
+ * For trajectory optimizers: opx_query_distance_spheres gives each
+ * sphere's signed distance, its gradient and a witness (against the map
+ * and the query's world), and opx_query_trajectory_cost the obstacle cost
+ * of a trajectory of a robot of spheres with its joint gradient.
  */
 #ifndef OCTOPROX_SPHERES_H
 #define OCTOPROX_SPHERES_H
@@ -120,8 +125,10 @@ OPX_API opx_status opx_sphere_distance_request_init(opx_sphere_distance_request 
  * A non-finite value or a negative radius is an invalid argument naming
  * the row, count 0 one too; request may be NULL (defaults).  On any error
  * the outputs are unspecified.  With OPX_UNKNOWN_FREE, the first call
- * after the map changed builds its obstacle grid (as the sphere checks do),
- * which lets spheres surely beyond max_distance skip the search.
+ * after the map changed builds its obstacle grid (as the sphere checks do):
+ * spheres surely beyond max_distance skip the search, and with whole cells
+ * the search reads the grid's bricks around the centre instead of the
+ * octree, with the same distances.
  */
 OPX_API opx_status opx_query_distance_spheres(opx_query *query, const opx_octree *tree, const double *spheres,
                                               size_t count, size_t stride,
