@@ -39,6 +39,18 @@ public:
     // returns that answer (kNo when none did); kUndecided for a box more
     // than kMaxBricksAcross bricks wide.
     static constexpr int32_t kMaxBricksAcross = 17;
+
+    // The bricks' box: the key of brick (0, 0, 0)'s first cell and the
+    // bricks per axis; and the obstacle word of brick b (in bricks from
+    // that one, bit x + 4y + 16z), 0 when empty or outside the box.
+    const int32_t *origin() const { return origin_; }
+    const int32_t *bricks() const { return bricks_; }
+    uint64_t word(const int32_t b[3]) const {
+        for (int axis = 0; axis < 3; ++axis)
+            if (b[axis] < 0 || b[axis] >= bricks_[axis]) return 0;
+        const uint32_t at = brick_[(size_t(b[2]) * bricks_[1] + b[1]) * bricks_[0] + b[0]];
+        return at == 0 ? 0 : words_[at - 1];
+    }
     template <class CellAnswer>
     GridAnswer ask_cells(const int32_t lo[3], const int32_t hi[3], CellAnswer &&cell) const;
 

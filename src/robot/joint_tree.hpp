@@ -56,6 +56,11 @@ public:
     // prismatic joints that mimic none), in model order: every joint's
     // position follows from theirs.
     const std::vector<uint32_t> &active_joints() const { return active_; }
+    // Where a moving joint's position comes from: multiplier(j) times the
+    // commanded value of master(j), plus an offset, composed along mimic
+    // chains (a joint that mimics none: itself, 1).
+    uint32_t master(uint32_t joint) const { return master_[joint]; }
+    double multiplier(uint32_t joint) const { return multiplier_[joint]; }
 
     // The values callers set, per joint; FK reads positions().
     void set_commanded(const double *values);  // joint_count() values

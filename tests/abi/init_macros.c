@@ -33,6 +33,8 @@ int opx_init_macros_compile(void) {
     const opx_motion_result motion_result = OPX_MOTION_RESULT_INIT;
     const opx_point_cloud_info cloud_info = OPX_POINT_CLOUD_INFO_INIT;
     const opx_sphere_request sphere_request = OPX_SPHERE_REQUEST_INIT;
+    const opx_sphere_distance_request sphere_distance = OPX_SPHERE_DISTANCE_REQUEST_INIT;
+    const opx_trajectory_cost_request trajectory_cost = OPX_TRAJECTORY_COST_REQUEST_INIT;
     return pose.orientation[3] == 1.0 && octree_options.struct_size == sizeof octree_options &&
            insert_options.struct_size == sizeof insert_options &&
            report.struct_size == sizeof report && image.struct_size == sizeof image &&
@@ -50,6 +52,8 @@ int opx_init_macros_compile(void) {
            self_distance_result.struct_size == sizeof self_distance_result &&
            pair_sampling.struct_size == sizeof pair_sampling &&
            sphere_request.struct_size == sizeof sphere_request &&
+           sphere_distance.struct_size == sizeof sphere_distance &&
+           trajectory_cost.struct_size == sizeof trajectory_cost &&
            pair_sampling_result.struct_size == sizeof pair_sampling_result &&
            batch_request.struct_size == sizeof batch_request &&
            motion_request.struct_size == sizeof motion_request &&

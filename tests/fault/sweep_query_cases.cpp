@@ -160,6 +160,35 @@ protected:
     opx_octree *tree_ = nullptr;
 };
 
+// Signed sphere distances on the attempt's own map, on two threads.
+class SphereDistanceAttempt : public OwnMapAttempt {
+public:
+    SphereDistanceAttempt() {
+        Lcg rng(13);
+        for (size_t i = 0; i < kSpheres; ++i)
+            for (double value : {rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.0, 2.5),
+                                 rng.uniform(0.0, 0.3)})
+                rows_.push_back(value);
+    }
+    opx_status call() override {
+        opx_sphere_distance_request request = OPX_SPHERE_DISTANCE_REQUEST_INIT;
+        request.max_threads = 2;
+        request.max_distance = 0.5;
+        return opx_query_distance_spheres(query_, tree_, rows_.data(), kSpheres, 0, &request, distance_, gradient_,
+                                          nullptr, kSpheres);
+    }
+    void record_answer(Record &record) override {
+        record.add_bytes("sphere distances", distance_, sizeof distance_);
+        record.add_bytes("sphere gradients", gradient_, sizeof gradient_);
+    }
+
+private:
+    static constexpr size_t kSpheres = 40;
+    std::vector<double> rows_;
+    double distance_[kSpheres] = {};
+    double gradient_[3 * kSpheres] = {};
+};
+
 // Spheres against the attempt's own map.
 class SpheresAttempt : public OwnMapAttempt {
 public:
@@ -210,6 +239,33 @@ private:
     uint8_t collided_[kRows] = {};
 };
 
+// A trajectory of the sphere arm on the attempt's own map: its cost and gradient.
+class TrajectoryCostAttempt : public OwnMapAttempt {
+public:
+    TrajectoryCostAttempt() {
+        arm_ = sphere_arm();
+        rows_ = sphere_arm_rows(kRows, 17);
+    }
+    ~TrajectoryCostAttempt() override { opx_linkset_destroy(arm_); }
+    opx_status call() override {
+        opx_trajectory_cost_request request = OPX_TRAJECTORY_COST_REQUEST_INIT;
+        request.activation = 0.1;
+        return opx_query_trajectory_cost(query_, tree_, arm_, rows_.data(), kRows, kSphereArmJoints, 0,
+                                         &kSphereArmBase, &request, &cost_, gradient_, kRows);
+    }
+    void record_answer(Record &record) override {
+        record.add_bytes("trajectory cost", &cost_, sizeof cost_);
+        record.add_bytes("trajectory gradient", gradient_, sizeof gradient_);
+    }
+
+private:
+    static constexpr size_t kRows = 8;
+    opx_linkset *arm_ = nullptr;
+    std::vector<double> rows_;
+    double cost_ = 0.0;
+    double gradient_[kRows * kSphereArmJoints] = {};
+};
+
 std::string case_name(const std::string &what, int32_t engine, Stage stage) {
     return what + (engine == OPX_ENGINE_DIRECT ? " direct " : " amortized ") + stage_name(stage);
 }
@@ -236,6 +292,10 @@ std::vector<SweepCase> query_cases() {
     }
     cases.push_back({"opx_query_collide_spheres on a new map",
                      [] { return std::unique_ptr<Attempt>(new SpheresAttempt()); }, {}});
+    cases.push_back({"opx_query_distance_spheres on a new map",
+                     [] { return std::unique_ptr<Attempt>(new SphereDistanceAttempt()); }, {}});
+    cases.push_back({"opx_query_trajectory_cost of a sphere arm on a new map",
+                     [] { return std::unique_ptr<Attempt>(new TrajectoryCostAttempt()); }, {}});
     cases.push_back({"opx_query_check_configurations of a sphere arm on a new map",
                      [] { return std::unique_ptr<Attempt>(new SphereBatchAttempt()); }, {}});
     return cases;

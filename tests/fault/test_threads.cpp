@@ -181,6 +181,14 @@ void sphere_queries(Record &record, const SharedScene &scene) {
     record.add("collide_spheres", opx_query_collide_spheres(query, scene.sphere_map, scene.spheres.data(), count, 0,
                                                             nullptr, collided.data(), count));
     record.add_bytes("spheres collided", collided.data(), count);
+    opx_sphere_distance_request request = OPX_SPHERE_DISTANCE_REQUEST_INIT;
+    request.max_threads = 2;
+    std::vector<double> distance(count), gradient(3 * count);
+    record.add("distance_spheres", opx_query_distance_spheres(query, scene.sphere_map, scene.spheres.data(), count, 0,
+                                                              &request, distance.data(), gradient.data(), nullptr,
+                                                              count));
+    record.add_bytes("sphere distances", distance.data(), count * sizeof(double));
+    record.add_bytes("sphere gradients", gradient.data(), 3 * count * sizeof(double));
     opx_query_destroy(query);
 }
 
@@ -199,6 +207,16 @@ void sphere_batch_queries(Record &record, const SharedScene &scene) {
                                                   collided.data(), nullptr, count));
         record.add_bytes("configurations collided", collided.data(), count);
     }
+    // The arm's rows as one trajectory: its cost and gradient.
+    opx_trajectory_cost_request request = OPX_TRAJECTORY_COST_REQUEST_INIT;
+    request.activation = 0.1;
+    double cost = 0.0;
+    std::vector<double> gradient(scene.sphere_rows.size());
+    record.add("trajectory_cost", opx_query_trajectory_cost(query, scene.batch_map, scene.sphere_arm,
+                                                            scene.sphere_rows.data(), count, kSphereArmJoints, 0,
+                                                            &kSphereArmBase, &request, &cost, gradient.data(), count));
+    record.add_bytes("trajectory cost", &cost, sizeof cost);
+    record.add_bytes("trajectory gradient", gradient.data(), gradient.size() * sizeof(double));
     opx_query_destroy(query);
 }
 

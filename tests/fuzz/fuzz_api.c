@@ -34,6 +34,8 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_READ] = op_query_read,
     [OP_QUERY_SPHERES] = op_query_spheres,
     [OP_QUERY_BATCH] = op_query_batch,
+    [OP_QUERY_SPHERE_DISTANCE] = op_query_sphere_distance,
+    [OP_QUERY_TRAJECTORY_COST] = op_query_trajectory_cost,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }

@@ -96,6 +96,7 @@ void op_query_collide(fuzz_api *api);
 void op_query_distance(fuzz_api *api);
 void op_query_read(fuzz_api *api);
 void op_query_spheres(fuzz_api *api);
+void op_query_sphere_distance(fuzz_api *api);
 
 /* fuzz_api_path.c */
 void op_query_path(fuzz_api *api);
@@ -103,5 +104,6 @@ void op_query_boxes(fuzz_api *api);
 
 /* fuzz_api_batch.c */
 void op_query_batch(fuzz_api *api);
+void op_query_trajectory_cost(fuzz_api *api);
 
 #endif /* OPX_FUZZ_API_H */

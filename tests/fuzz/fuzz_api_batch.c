@@ -3,7 +3,8 @@
  * them, which the batch checks on the map's obstacle grid) against a map,
  * on 1 to 3 threads.  Each accepted answer must equal the single call's:
  * forward kinematics on a clone of the link set, then opx_query_collide
- * with the same settings.  See fuzz_api.h. */
+ * with the same settings.  The trajectory cost of the same rows is checked
+ * for a finite answer that a second query repeats.  See fuzz_api.h. */
 #include "fuzz_api.h"
 #include "fuzz_api_requests.h"
 
@@ -61,4 +62,42 @@ void op_query_batch(fuzz_api *api) {
             single_collides(api->reference[0], tree, links, rows + i * joints, joints, &base, &request);
         if (expected >= 0) FUZZ_REQUIRE(collided[i] == expected);
     }
+}
+
+/* A trajectory's obstacle cost (opx_query_trajectory_cost): the link set's
+ * rows as waypoints; an accepted answer is a finite cost >= 0 with a
+ * finite gradient, the same on a second call. */
+void op_query_trajectory_cost(fuzz_api *api) {
+    fuzz_input *in = &api->in;
+    opx_query *query = take_query(api);
+    const opx_octree *tree = take_tree(api);
+    const opx_linkset *links = take_linkset(api);
+    opx_batch_request batch = OPX_BATCH_REQUEST_INIT;
+    take_batch_request(in, &batch);
+    opx_trajectory_cost_request request = OPX_TRAJECTORY_COST_REQUEST_INIT;
+    request.struct_size = batch.struct_size == sizeof batch ? sizeof request : batch.struct_size;
+    request.unknown_policy = batch.unknown_policy;
+    request.occupancy_threshold = batch.occupancy_threshold;
+    request.obstacle_geometry = batch.obstacle_geometry;
+    request.joint_order = batch.joint_order;
+    request.activation = take_u8(in) < 240 ? 0.01 + take_u8(in) / 500.0 : take_double(in);
+    uint32_t joint_count = 0;
+    if (links != NULL && opx_linkset_get_joint_count(links, &joint_count) != OPX_OK) joint_count = 0;
+    const size_t joints = take_u8(in) < 240 ? joint_count : take_below(in, MAX_JOINTS + 1);
+    const size_t count = take_u8(in) < 240 ? 1 + take_below(in, MAX_ROWS) : take_below(in, MAX_ROWS + 1);
+    double rows[MAX_ROWS * MAX_JOINTS] = {0};
+    if (joints > MAX_JOINTS) return;
+    for (size_t i = 0; i < count * joints; ++i) rows[i] = take_joint_position(in);
+    opx_pose base;
+    take_base(in, tree, &base);
+    double cost = -1.0, again = -1.0, gradient[MAX_ROWS * MAX_JOINTS], second[MAX_ROWS * MAX_JOINTS];
+    const size_t capacity = take_u8(in) < 240 ? count : take_below(in, MAX_ROWS + 1);
+    const opx_status status = FUZZ_CALL(opx_query_trajectory_cost, query, tree, links, rows, count, joints, 0, &base,
+                                        &request, &cost, gradient, capacity);
+    if (status != OPX_OK) return;
+    FUZZ_REQUIRE(cost >= 0.0 && cost < 1e300);
+    for (size_t i = 0; i < count * joints; ++i) FUZZ_REQUIRE(gradient[i] == gradient[i]);
+    FUZZ_REQUIRE(opx_query_trajectory_cost(api->reference[0], tree, links, rows, count, joints, 0, &base, &request,
+                                           &again, second, capacity) == OPX_OK);
+    FUZZ_REQUIRE(again == cost);
 }

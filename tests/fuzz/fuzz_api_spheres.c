@@ -2,9 +2,13 @@
  * (opx_query_collide_spheres), each checked against the answer of
  * opx_query_collide for a link set holding that sphere alone.  Between
  * calls the map may be changed or cleared, so the map's obstacle grid is
- * built, kept and rebuilt along the way.  See fuzz_api.h. */
+ * built, kept and rebuilt along the way.  The signed distances of the
+ * same kind of rows (opx_query_distance_spheres) agree with the sphere
+ * checks away from the touch limit.  See fuzz_api.h. */
 #include "fuzz_api.h"
 #include "fuzz_api_requests.h"
+
+#include <math.h>
 
 enum { MAX_SPHERES = 8 };
 
@@ -85,6 +89,73 @@ void op_query_spheres(fuzz_api *api) {
             const int expected = one_sphere_collides(api->reference[0], tree, row, &request);
             if (expected >= 0) FUZZ_REQUIRE(collided[i] == expected);
         }
+    }
+    free(rows);
+}
+
+/* A distance request: the sphere request's fields, then threads and a
+ * max_distance (mostly 2 to 66 cm, sometimes any double). */
+static void take_sphere_distance_request(fuzz_input *in, opx_sphere_distance_request *request,
+                                         opx_sphere_request *as_check) {
+    take_sphere_request(in, as_check);
+    request->struct_size = as_check->struct_size == sizeof *as_check ? sizeof *request : as_check->struct_size;
+    request->unknown_policy = as_check->unknown_policy;
+    request->occupancy_threshold = as_check->occupancy_threshold;
+    request->obstacle_geometry = as_check->obstacle_geometry;
+    request->max_threads = take_u8(in) % 4;
+    request->max_distance = take_radius(in);
+}
+
+void op_query_sphere_distance(fuzz_api *api) {
+    fuzz_input *in = &api->in;
+    opx_query *query = take_query(api);
+    const opx_octree *tree = take_tree(api);
+    opx_sphere_distance_request request = OPX_SPHERE_DISTANCE_REQUEST_INIT;
+    opx_sphere_request as_check = OPX_SPHERE_REQUEST_INIT;
+    take_sphere_distance_request(in, &request, &as_check);
+    const uint8_t many = take_u8(in);
+    const size_t count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
+    const size_t stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
+    const size_t step = stride == 0 ? 4 * sizeof(double) : stride;
+    occupied_targets targets;
+    find_occupied_targets(tree, &targets);
+    double *rows = calloc(array_bytes(count, stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
+    FUZZ_REQUIRE(rows != NULL);
+    for (size_t i = 0; i < count && step >= 4 * sizeof(double); ++i) {
+        double row[4];
+        take_row(in, &targets, row);
+        memcpy((char *)rows + i * step, row, sizeof row);
+    }
+    double distance[MAX_SPHERES + 1], gradient[3 * (MAX_SPHERES + 1)];
+    const size_t capacity = take_u8(in) < 240 ? count : take_below(in, MAX_SPHERES + 1);
+    const int with_gradient = take_u8(in) < 200;
+    const opx_status status =
+        FUZZ_CALL(opx_query_distance_spheres, query, tree, take_u8(in) < 250 ? rows : NULL, count, stride, &request,
+                  distance, with_gradient ? gradient : NULL, NULL, capacity);
+    if (status != OPX_OK || tree == NULL) {
+        free(rows);
+        return;
+    }
+    opx_octree_options options = OPX_OCTREE_OPTIONS_INIT;
+    FUZZ_REQUIRE(opx_octree_get_options(tree, &options) == OPX_OK);
+    const double resolution = options.resolution;
+    uint8_t collided[MAX_SPHERES + 1];
+    const int checked = FUZZ_CALL(opx_query_collide_spheres, api->reference[0], tree, rows, count, stride, &as_check,
+                                  collided, count) == OPX_OK;
+    for (size_t i = 0; i < count; ++i) {
+        FUZZ_REQUIRE(distance[i] <= request.max_distance);
+        if (with_gradient) {
+            const double *g = gradient + 3 * i, norm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+            FUZZ_REQUIRE(norm == 0.0 || fabs(norm - 1.0) < 1e-9);
+            FUZZ_REQUIRE((norm == 0.0) == (distance[i] == request.max_distance));
+        }
+        /* Away from the touch limit (rounding of far centres included) both calls agree. */
+        double row[4];
+        memcpy(row, (const char *)rows + i * step, sizeof row);
+        const double scale = fmax(fabs(row[0]), fmax(fabs(row[1]), fmax(fabs(row[2]), row[3])));
+        const double margin = 1e-6 + 1e-12 * scale + 1e-7 * resolution;
+        if (checked && distance[i] > margin) FUZZ_REQUIRE(collided[i] == 0);
+        if (checked && distance[i] < -margin) FUZZ_REQUIRE(collided[i] == 1);
     }
     free(rows);
 }

@@ -32,7 +32,8 @@ from ._structs import (CameraIntrinsics, CellInfo, CollisionRequest, CollisionRe
                        PairSamplingOptions, PairSamplingResult, PathRequest, PathResult,
                        PointCloudInfo, Pose, QueryOptions, QueryStats, SelfCollisionRequest,
                        SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult,
-                       SphereRequest, UrdfOptions)
+                       SphereDistanceRequest, SphereRequest, TrajectoryCostRequest,
+                       UrdfOptions)
 from .linkset import (SHAPE_BOX, SHAPE_CAPSULE, SHAPE_CONVEX, SHAPE_CYLINDER, SHAPE_MESH,
                       SHAPE_SPHERE, LinkSet)
 from .octree import (FORMAT_AUTO, FORMAT_BT, FORMAT_OPX, FORMAT_OT, MASK_ALL_KNOWN, MASK_FREE,
@@ -78,7 +79,8 @@ __all__ = [
     "DistanceResult", "InsertOptions", "InsertReport", "JointInfo", "Leaf", "OctreeOptions",
     "OctreeStats", "PairSamplingOptions", "PairSamplingResult", "PathRequest", "PathResult", "PointCloudInfo", "Pose",
     "QueryOptions", "QueryStats", "SelfCollisionRequest", "SelfCollisionResult", "SelfContact",
-    "SelfDistanceRequest", "SelfDistanceResult", "SphereRequest", "UrdfOptions",
+    "SelfDistanceRequest", "SelfDistanceResult", "SphereDistanceRequest", "SphereRequest",
+    "TrajectoryCostRequest", "UrdfOptions",
     # exceptions
     "OctoproxError", "InvalidArgumentError", "OutOfMemoryError", "VersionError",
     "BufferTooSmallError", "UnsupportedError", "IoError", "CorruptDataError", "InternalError",

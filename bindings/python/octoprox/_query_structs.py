@@ -156,6 +156,26 @@ class SphereRequest(Struct):
                 ("reserved0", c_int32)]
 
 
+class SphereDistanceRequest(Struct):
+    """The options of Query.distance_spheres: unknown_policy,
+    occupancy_threshold (0: the octree's), obstacle_geometry, max_threads
+    (1: the caller's thread; 0: one per hardware thread), max_distance (m,
+    > 0, inf allowed: spheres at least this far report it, a zero gradient
+    and a NaN witness)."""
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("obstacle_geometry", c_int32),
+                ("max_threads", c_uint32), ("max_distance", c_double)]
+
+
+class TrajectoryCostRequest(Struct):
+    """The options of Query.trajectory_cost: unknown_policy,
+    occupancy_threshold, obstacle_geometry, joint_order, activation (eps,
+    m, > 0: CHOMP's activation distance)."""
+    _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
+                ("occupancy_threshold", c_double), ("obstacle_geometry", c_int32),
+                ("joint_order", c_int32), ("activation", c_double)]
+
+
 class SelfDistanceRequest(Struct):
     """The options of Query.self_distance: signed_distance (overlap as
     minus the deepest penetration), cutoff (m; pairs farther are not
@@ -257,6 +277,8 @@ typed_fields(SelfCollisionRequest, compute_penetration=bool)
 typed_fields(SelfCollisionResult, collided=bool, truncated=bool)
 typed_fields(SelfDistanceRequest, signed_distance=bool)
 typed_fields(SphereRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
+typed_fields(SphereDistanceRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
+typed_fields(TrajectoryCostRequest, unknown_policy=_POLICY, obstacle_geometry=_GEOMETRY)
 typed_fields(SelfDistanceResult, found=bool, collided=bool)
 typed_fields(PathRequest, unknown_policy=_POLICY, compute_distance=bool, compute_cost=bool,
              obstacle_geometry=_GEOMETRY)

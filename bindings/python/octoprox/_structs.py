@@ -15,7 +15,8 @@ from ._query_structs import (BatchRequest, CollisionRequest, CollisionResult, Co
                              DistanceRequest, DistanceResult, MotionRequest, MotionResult,
                              PathRequest, PathResult, QueryOptions, QueryStats,
                              SelfCollisionRequest, SelfCollisionResult, SelfContact,
-                             SelfDistanceRequest, SelfDistanceResult, SphereRequest)
+                             SelfDistanceRequest, SelfDistanceResult, SphereDistanceRequest,
+                             SphereRequest, TrajectoryCostRequest)
 from ._struct_base import D3, Pose, Struct, typed_fields
 
 
@@ -209,6 +210,8 @@ VERSIONED = {
     SelfContact: "opx_self_contact_init",
     SelfDistanceRequest: "opx_self_distance_request_init",
     SphereRequest: "opx_sphere_request_init",
+    SphereDistanceRequest: "opx_sphere_distance_request_init",
+    TrajectoryCostRequest: "opx_trajectory_cost_request_init",
     SelfDistanceResult: "opx_self_distance_result_init",
     PairSamplingOptions: "opx_pair_sampling_options_init",
     PairSamplingResult: "opx_pair_sampling_result_init",

@@ -1,7 +1,7 @@
 """Many configurations and joint-space motions per call (batch.h):
 Query.check_configurations, check_motion and check_motions, and many
-spheres per call (spheres.h): Query.collide_spheres (Query inherits
-them).
+spheres per call (spheres.h): Query.collide_spheres,
+Query.distance_spheres and Query.trajectory_cost (Query inherits them).
 
 The robot is a LinkSet made from URDF.  Joint vectors are rows of the
 active joints (LinkSet.active_joint_names: the moving joints that mimic
@@ -49,6 +49,10 @@ _MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshol
 _MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
             "occupancy_threshold", "obstacle_geometry", "joint_order")
 _SPHERES = ("unknown_policy", "occupancy_threshold", "obstacle_geometry")
+_TRAJECTORY = ("activation", "unknown_policy", "occupancy_threshold", "obstacle_geometry",
+               "joint_order")
+_SPHERE_DISTANCES = ("max_distance", "max_threads", "unknown_policy", "occupancy_threshold",
+                     "obstacle_geometry")
 
 
 def joint_rows(q, where):
@@ -105,6 +109,10 @@ class BatchQueries:
         self._motion_requests = RequestCache(s.MotionRequest, _MOTION, "Query.check_motion")
         self._motions_requests = RequestCache(s.MotionRequest, _MOTIONS, "Query.check_motions")
         self._sphere_requests = RequestCache(s.SphereRequest, _SPHERES, "Query.collide_spheres")
+        self._trajectory_requests = RequestCache(s.TrajectoryCostRequest, _TRAJECTORY,
+                                                 "Query.trajectory_cost")
+        self._sphere_distance_requests = RequestCache(s.SphereDistanceRequest, _SPHERE_DISTANCES,
+                                                      "Query.distance_spheres")
 
     @api("Query.collide_spheres")
     def collide_spheres(self, tree: Octree, spheres: ArrayLike, *,
@@ -139,6 +147,86 @@ class BatchQueries:
         lib.opx_query_collide_spheres(self, tree, rows.ctypes.data, n, 0, request,
                                       collided.ctypes.data, n)
         return collided
+
+    @api("Query.distance_spheres")
+    def distance_spheres(self, tree: Optional[Octree], spheres: ArrayLike,
+                         max_distance: float = 0.1, world: Optional[World] = None, *,
+                         threads: int = 1,
+                         unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                         occupancy_threshold: float = 0.0,
+                         obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS
+                         ) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Signed distances of spheres to the map's obstacles and (with
+        world=) a World's enabled objects, for trajectory optimizers
+        (spheres.h: opx_query_distance_spheres states the rules).
+
+        spheres: an (N, 4) array of rows x, y, z, radius (map frame,
+          metres; radius >= 0).
+        max_distance: metres (> 0, inf allowed); spheres at least this far
+          report it, a zero gradient and a NaN witness.
+        threads: 1 (the caller's), 0 (one per hardware thread) or N.
+
+        Returns (distance (N,), gradient (N, 3), witness (N, 3)): each
+        sphere's signed distance (surface to the nearest obstacle;
+        negative: minus the depth of its centre plus its radius), the unit
+        gradient of the distance with respect to the centre (away from
+        the nearest obstacle) and the witness (the nearest obstacle point,
+        or inside, the nearest point outside every obstacle).
+        """
+        if not isinstance(tree, Octree) and (world is None or tree is not None):
+            raise TypeError(f"Query.distance_spheres: expected an Octree (None with a world), "
+                            f"got {type(tree).__name__}")
+        rows = np.ascontiguousarray(spheres, dtype=np.float64)
+        if rows.ndim == 1:
+            rows = rows.reshape(1, -1)
+        if rows.ndim != 2 or rows.shape[1] != 4:
+            raise invalid(f"spheres must have shape (N, 4) (x, y, z, radius), got {rows.shape}",
+                          "Query.distance_spheres")
+        n = len(rows)
+        distance = np.zeros(n)
+        gradient = np.zeros((n, 3))
+        witness = np.zeros((n, 3))
+        request = self._sphere_distance_requests.lookup(
+            (max_distance, threads, unknown_policy, occupancy_threshold, obstacle_geometry))
+        call_with_world(self, world, "Query.distance_spheres", lambda: lib.opx_query_distance_spheres(
+            self, tree, rows.ctypes.data, n, 0, request, distance.ctypes.data, gradient.ctypes.data,
+            witness.ctypes.data, n))
+        return distance, gradient, witness
+
+    @api("Query.trajectory_cost")
+    def trajectory_cost(self, tree: Optional[Octree], robot: LinkSet, q: ArrayLike,
+                        activation: float = 0.05, world: Optional[World] = None, *,
+                        base_pose: Optional[PoseLike] = None,
+                        unknown_policy: UnknownPolicyLike = UnknownPolicy.FREE,
+                        occupancy_threshold: float = 0.0,
+                        obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
+                        joint_order: JointOrderLike = JointOrder.BY_COUNT
+                        ) -> Tuple[float, np.ndarray]:
+        """The obstacle cost of a trajectory of a robot made of spheres (a
+        LinkSet from a spherized URDF) and its gradient, for trajectory
+        optimizers (spheres.h: opx_query_trajectory_cost states the rules).
+
+        q: a (T, dof) array of waypoints (active joints or every joint, as
+          joint_order says). activation: eps (m); the cost sums CHOMP's
+          penalty of each sphere's signed distance d: -d + eps/2 inside,
+          (d - eps)^2 / (2 eps) up to eps, 0 beyond.
+
+        Returns (cost, gradient (T, dof)).  Raises InvalidArgumentError for
+        a robot with a shape that is not a sphere.
+        """
+        _check_operands(tree, robot, "Query.trajectory_cost", world)
+        rows = joint_rows(q, "Query.trajectory_cost")
+        n = len(rows)
+        gradient = np.zeros(rows.shape)
+        cost = ctypes.c_double(0.0)
+        base = None if base_pose is None else make_pose(base_pose)
+        request = self._trajectory_requests.lookup(
+            (activation, unknown_policy, occupancy_threshold, obstacle_geometry, joint_order))
+        call_with_world(self, world, "Query.trajectory_cost", lambda: lib.opx_query_trajectory_cost(
+            self, tree, robot, rows.ctypes.data, n, rows.shape[1], _row_stride(rows),
+            None if base is None else ctypes.addressof(base), request, ctypes.addressof(cost),
+            gradient.ctypes.data, n))
+        return cost.value, gradient
 
     @api("Query.check_configurations")
     def check_configurations(self, tree: Optional[Octree], robot: LinkSet, q: ArrayLike,

@@ -100,6 +100,8 @@ KEYWORDS = {
     "check_configurations": (s.BatchRequest,
                              {"threads": "max_threads", "distance": "compute_distance"}, ()),
     "check_motion": (s.MotionRequest, {}, ("max_threads",)),
+    "distance_spheres": (s.SphereDistanceRequest, {"threads": "max_threads"}, ()),
+    "trajectory_cost": (s.TrajectoryCostRequest, {}, ()),
     "check_motions": (s.MotionRequest, {"threads": "max_threads"},
                       ("compute_cost", "max_cost_boxes", "unknown_probability", "region_min",
                        "region_max")),

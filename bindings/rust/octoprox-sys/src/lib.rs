@@ -76,6 +76,8 @@ default_from_init! {
     opx_joint_info => opx_joint_info_init,
     opx_point_cloud_info => opx_point_cloud_info_init,
     opx_sphere_request => opx_sphere_request_init,
+    opx_sphere_distance_request => opx_sphere_distance_request_init,
+    opx_trajectory_cost_request => opx_trajectory_cost_request_init,
 }
 
 impl Default for opx_pose {

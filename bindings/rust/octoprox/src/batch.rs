@@ -82,7 +82,7 @@ pub struct MotionAnswers {
 
 /// Rows of `values` for the robot: the row count, each row `joints` values
 /// (the active joints with [`JointOrder::Active`], else every joint).
-fn row_count(robot: &LinkSet, values: &[f64], order: JointOrder, what: &str) -> Result<(usize, usize)> {
+pub(crate) fn row_count(robot: &LinkSet, values: &[f64], order: JointOrder, what: &str) -> Result<(usize, usize)> {
     let (joints, kind) = match order {
         JointOrder::Active => (robot.active_joint_count()? as usize, "active joints"),
         JointOrder::ByCount | JointOrder::Model => (robot.joint_count()? as usize, "joints"),

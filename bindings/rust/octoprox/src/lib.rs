@@ -96,7 +96,7 @@ pub use results::{CollisionResult, Contact, CostBox, DistanceResult, PathResult,
 pub use robot::{JointInfo, JointType, UrdfOptions};
 pub use self_types::{PairSamplingOptions, PairSamplingResult, SelfCollisionRequest,
                      SelfCollisionResult, SelfContact, SelfDistanceRequest, SelfDistanceResult};
-pub use spheres::SphereRequest;
+pub use spheres::{SphereDistanceRequest, SphereDistances, SphereRequest, TrajectoryCost, TrajectoryCostRequest};
 pub use world::{SceneFormat, World};
 
 use octoprox_sys as sys;
