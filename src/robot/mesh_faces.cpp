@@ -50,11 +50,44 @@ bool clearly_concave(const MeshFace &owner, int k, const Vec3 &far, double outwa
     return height > kConcaveMargin * (far - a).norm();
 }
 
+Aabb face_box(const MeshFace &face) {
+    Aabb box;
+    for (const Vec3 &v : face.v) box.grow(v);
+    return box;
+}
+
+// Splits faces [first, first + count) at the median of their centres
+// along the box's longest axis until a run fits a leaf; returns the node.
+int32_t build_node(std::vector<MeshFace> &faces, uint32_t first, uint32_t count, std::vector<FaceNode> &nodes) {
+    const int32_t index = int32_t(nodes.size());
+    nodes.emplace_back();
+    Aabb box;
+    for (uint32_t i = first; i < first + count; ++i) box.grow(face_box(faces[i]));
+    nodes[index].box = box;
+    if (count <= kFacesPerLeaf) {
+        nodes[index].first = first, nodes[index].count = count;
+        return index;
+    }
+    int axis = 0;
+    const Vec3 size = box.hi - box.lo;
+    if (size.y() > size[axis]) axis = 1;
+    if (size.z() > size[axis]) axis = 2;
+    const auto centre = [axis](const MeshFace &f) { return f.v[0][axis] + f.v[1][axis] + f.v[2][axis]; };
+    const uint32_t half = count / 2;
+    std::nth_element(faces.begin() + first, faces.begin() + first + half, faces.begin() + first + count,
+                     [&](const MeshFace &a, const MeshFace &b) { return centre(a) < centre(b); });
+    const int32_t left = build_node(faces, first, half, nodes);
+    const int32_t right = build_node(faces, first + half, count - half, nodes);
+    nodes[index].left = left, nodes[index].right = right;
+    return index;
+}
+
 }  // namespace
 
 std::shared_ptr<const MeshFaces> build_mesh_faces(const std::vector<Vec3> &vertices,
                                                   const std::vector<std::array<uint32_t, 3>> &triangles) {
-    auto faces = std::make_shared<MeshFaces>();
+    auto result = std::make_shared<MeshFaces>();
+    std::vector<MeshFace> *faces = &result->faces;
     faces->reserve(triangles.size());
     double volume6 = 0.0;
     for (const auto &t : triangles) {
@@ -84,23 +117,14 @@ std::shared_ptr<const MeshFaces> build_mesh_faces(const std::vector<Vec3> &verti
                 first.edges &= uint8_t(~(1u << owner_k));
         }
     }
-    return faces;
+    if (!faces->empty()) build_node(*faces, 0, uint32_t(faces->size()), result->nodes);
+    return result;
 }
 
-std::shared_ptr<const HullFaces> build_hull_faces(const std::vector<Vec3> &vertices) {
+std::shared_ptr<const MeshFaces> build_hull_faces(const std::vector<Vec3> &vertices) {
     HullMesh hull;
     if (!convex_hull(vertices, hull)) return nullptr;
-    auto result = std::make_shared<HullFaces>();
-    std::vector<Aabb> boxes;
-    boxes.reserve(hull.triangles.size());
-    for (const auto &t : hull.triangles) {
-        Aabb box;
-        for (const uint32_t v : t) box.grow(hull.vertices[v]);
-        boxes.push_back(box);
-    }
-    result->tree.build(boxes);
-    result->faces = build_mesh_faces(hull.vertices, hull.triangles);
-    return result;
+    return build_mesh_faces(hull.vertices, hull.triangles);
 }
 
 }  // namespace octoprox

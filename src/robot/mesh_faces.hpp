@@ -10,7 +10,7 @@
 // is not tested.
 #pragma once
 
-#include "broadphase/aabb_tree.hpp"
+#include "geometry/aabb.hpp"
 #include "geometry/pose.hpp"
 
 #include <array>
@@ -29,7 +29,24 @@ struct MeshFace {
     uint8_t vertices = 0;      // bit k: this face tests the ball around v[k]
 };
 
-using MeshFaces = std::vector<MeshFace>;
+// A node of the faces' tree: a leaf holds up to kFacesPerLeaf faces, in
+// a run of MeshFaces::faces.  A ray near a mesh crosses the boxes of many
+// small faces once they are grown by a padding of their own size, so a
+// leaf of a few faces costs the walk little selectivity and saves it most
+// of its nodes.
+struct FaceNode {
+    Aabb box;
+    int32_t left = -1, right = -1;  // children; -1 for a leaf
+    uint32_t first = 0, count = 0;  // a leaf's faces
+    bool is_leaf() const { return left < 0; }
+};
+
+constexpr uint32_t kFacesPerLeaf = 8;
+
+struct MeshFaces {
+    std::vector<MeshFace> faces;  // in the tree's leaf order
+    std::vector<FaceNode> nodes;  // root first
+};
 
 // The faces of a mesh whose edges are each shared by exactly two
 // triangles (mesh_is_closed).  Concave edges are left untested only when
@@ -37,16 +54,9 @@ using MeshFaces = std::vector<MeshFace>;
 std::shared_ptr<const MeshFaces> build_mesh_faces(const std::vector<Vec3> &vertices,
                                                   const std::vector<std::array<uint32_t, 3>> &triangles);
 
-// A convex shape's hull as faces (all its edges convex), with a tree over
-// them, both in the shape frame.
-struct HullFaces {
-    AabbTree tree;
-    std::shared_ptr<const MeshFaces> faces;
-};
-
-// The hull of `vertices` (geometry/convex_hull.hpp) as faces; null when
-// the vertices span no volume (such a hull is left to the exact convex
-// distance).
-std::shared_ptr<const HullFaces> build_hull_faces(const std::vector<Vec3> &vertices);
+// The hull of `vertices` (geometry/convex_hull.hpp) as the faces of a
+// closed mesh (all its edges convex); null when the vertices span no
+// volume (such a hull is left to the exact convex distance).
+std::shared_ptr<const MeshFaces> build_hull_faces(const std::vector<Vec3> &vertices);
 
 }  // namespace octoprox

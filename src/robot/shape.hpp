@@ -54,7 +54,7 @@ struct ShapeDef {
     LazyValue<std::shared_ptr<const MeshFaces>> faces;
     // Convex and open mesh: the hull of hull_vertices as faces, made the
     // same way; null when it spans no volume.
-    LazyValue<std::shared_ptr<const HullFaces>> hull_faces;
+    LazyValue<std::shared_ptr<const MeshFaces>> hull_faces;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.

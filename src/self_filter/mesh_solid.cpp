@@ -114,11 +114,11 @@ bool MeshSolid::inside(const Vec3 &x) const {
     return false;
 }
 
-double grown_faces_entry(const AabbTree &tree, const MeshFaces &faces, const Convex &pose, double radius,
-                         const Vec3 &origin, const Vec3 &dir, double t_max) {
+double grown_faces_entry(const MeshFaces &faces, const Convex &pose, double radius, const Vec3 &origin,
+                         const Vec3 &dir, double t_max) {
     // In the shape frame, where the faces and the tree's boxes were made
     // once: a rigid motion of the ray keeps its parameter.
-    if (tree.empty()) return -1.0;
+    if (faces.nodes.empty()) return -1.0;
     const Vec3 o = pose.axes.transpose() * (origin - pose.center);
     const Vec3 d = pose.axes.transpose() * dir;
     const double grown = radius + kEntryTouch;
@@ -134,16 +134,18 @@ double grown_faces_entry(const AabbTree &tree, const MeshFaces &faces, const Con
     int depth = 0;
     const auto push = [&](int32_t index) {
         double t0;
-        if (slabs.enters(tree.node(index).box, grown, limit, t0)) stack[depth++] = Pending{index, t0};
+        if (slabs.enters(faces.nodes[index].box, grown, limit, t0)) stack[depth++] = Pending{index, t0};
     };
-    push(tree.root());
+    push(0);
     while (depth > 0) {
         const Pending next = stack[--depth];
         if (next.t0 > limit) continue;
-        const AabbTreeNode &node = tree.node(next.node);
+        const FaceNode &node = faces.nodes[next.node];
         if (node.is_leaf()) {
-            const double t = face_entry(faces[node.item], grown, o, d, limit);
-            if (t >= 0.0) best = t, limit = t;
+            for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+                const double t = face_entry(faces.faces[i], grown, o, d, limit);
+                if (t >= 0.0) best = t, limit = t;
+            }
             continue;
         }
         const int before = depth;

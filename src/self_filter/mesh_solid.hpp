@@ -9,11 +9,11 @@ namespace octoprox {
 
 // As grown_core_entry (solid_geometry.hpp) for the solid a closed mesh
 // bounds grown by `radius`, whose boundary a ray from outside crosses
-// first through a grown triangle: its faces (mesh_faces.hpp) under a tree
-// over them, both in the frame `pose` (center, axes) places in the map
+// first through a grown triangle: its faces and their tree
+// (mesh_faces.hpp), in the frame `pose` (center, axes) places in the map
 // frame.
-double grown_faces_entry(const AabbTree &tree, const MeshFaces &faces, const Convex &pose, double radius,
-                         const Vec3 &origin, const Vec3 &dir, double t_max);
+double grown_faces_entry(const MeshFaces &faces, const Convex &pose, double radius, const Vec3 &origin,
+                         const Vec3 &dir, double t_max);
 
 // The shape must be a closed mesh, placed (PlacedShape::place_mesh).
 class MeshSolid {

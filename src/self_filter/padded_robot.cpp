@@ -103,8 +103,8 @@ bool FilterSolid::holds(const Vec3 &x, double grow) const {
 
 double FilterSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
     if (closed_mesh)
-        return grown_faces_entry(shape->def->mesh_tree, *faces, shape->core, radius, origin, dir, t_max);
-    if (hull_faces) return grown_faces_entry(hull_faces->tree, *hull_faces->faces, core, radius, origin, dir, t_max);
+        return grown_faces_entry(*faces, shape->core, radius, origin, dir, t_max);
+    if (hull_faces) return grown_faces_entry(*hull_faces, core, radius, origin, dir, t_max);
     if (has_closed_form_entry(core)) return closed_form_entry(core, radius + kEntryTouch, origin, dir, t_max);
     return grown_core_entry(core, radius, origin, dir, t_max);
 }

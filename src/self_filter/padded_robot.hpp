@@ -21,7 +21,7 @@ struct FilterSolid {
     Convex core;               // every solid but a closed mesh (an open mesh: its vertices' hull)
     bool closed_mesh = false;  // the mesh's triangles bound the solid
     std::shared_ptr<const MeshFaces> faces;  // a closed mesh's (ShapeDef::faces)
-    std::shared_ptr<const HullFaces> hull_faces;  // a hull's, when it spans a volume (ShapeDef::hull_faces)
+    std::shared_ptr<const MeshFaces> hull_faces;  // a hull's, when it spans a volume (ShapeDef::hull_faces)
     double radius = 0.0;       // the ball grown onto the core: inflation plus robot_padding
     double solid_radius = 0.0; // the same without any padding (the unpadded solid)
     bool holds_origin = false; // the grown solid holds the sensor: it shadows nothing
