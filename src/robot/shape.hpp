@@ -11,6 +11,7 @@
 #include "broadphase/aabb_tree.hpp"
 #include "geometry/convex.hpp"
 #include "robot/box_columns.hpp"
+#include "robot/mesh_faces.hpp"
 
 #include <array>
 #include <atomic>
@@ -47,6 +48,13 @@ struct ShapeDef {
     // of their hull (shape frame), made by the first self-filtered insert
     // that needs it (self_filter/hull_vertices.hpp).
     LazyValue<std::vector<Vec3>> hull_vertices;
+    // Closed mesh: its faces as the self-filter's ray entry reads them
+    // (mesh_faces.hpp), made by the first self-filtered insert that needs
+    // them.
+    LazyValue<std::shared_ptr<const MeshFaces>> faces;
+    // Convex and open mesh: the hull of hull_vertices as faces, made the
+    // same way; null when it spans no volume.
+    LazyValue<std::shared_ptr<const MeshFaces>> hull_faces;
 };
 
 // Builds a mesh's triangle tree (in the shape frame); call once per mesh.

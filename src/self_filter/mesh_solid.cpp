@@ -114,10 +114,15 @@ bool MeshSolid::inside(const Vec3 &x) const {
     return false;
 }
 
-double MeshSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
-    const AabbTree &tree = mesh_.mesh_tree;
-    if (tree.empty()) return -1.0;
-    const double grown = radius_ + kEntryTouch;
+double grown_faces_entry(const MeshFaces &faces, const Convex &pose, double radius, const Vec3 &origin,
+                         const Vec3 &dir, double t_max) {
+    // In the shape frame, where the faces and the tree's boxes were made
+    // once: a rigid motion of the ray keeps its parameter.
+    if (faces.nodes.empty()) return -1.0;
+    const Vec3 o = pose.axes.transpose() * (origin - pose.center);
+    const Vec3 d = pose.axes.transpose() * dir;
+    const double grown = radius + kEntryTouch;
+    const RaySlabs slabs(o, d);
     double best = -1.0, limit = t_max;
     // Nodes nearer the sensor first, each with the parameter where the ray
     // enters its grown box: a hit found early shortens the ray for the rest.
@@ -128,19 +133,19 @@ double MeshSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const
     Pending stack[kStack];
     int depth = 0;
     const auto push = [&](int32_t index) {
-        Aabb box = tree.node(index).box;
-        box.inflate(grown);
-        double t0 = 0.0, t1 = limit;
-        if (segment_in_box(box, origin, dir, t0, t1)) stack[depth++] = Pending{index, t0};
+        double t0;
+        if (slabs.enters(faces.nodes[index].box, grown, limit, t0)) stack[depth++] = Pending{index, t0};
     };
-    push(tree.root());
+    push(0);
     while (depth > 0) {
         const Pending next = stack[--depth];
         if (next.t0 > limit) continue;
-        const AabbTreeNode &node = tree.node(next.node);
+        const FaceNode &node = faces.nodes[next.node];
         if (node.is_leaf()) {
-            const double t = closed_form_entry(mesh_.triangle(node.item), grown, origin, dir, limit);
-            if (t >= 0.0) best = t, limit = t;
+            for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+                const double t = face_entry(faces.faces[i], grown, o, d, limit);
+                if (t >= 0.0) best = t, limit = t;
+            }
             continue;
         }
         const int before = depth;

@@ -7,6 +7,14 @@
 
 namespace octoprox {
 
+// As grown_core_entry (solid_geometry.hpp) for the solid a closed mesh
+// bounds grown by `radius`, whose boundary a ray from outside crosses
+// first through a grown triangle: its faces and their tree
+// (mesh_faces.hpp), in the frame `pose` (center, axes) places in the map
+// frame.
+double grown_faces_entry(const MeshFaces &faces, const Convex &pose, double radius, const Vec3 &origin,
+                         const Vec3 &dir, double t_max);
+
 // The shape must be a closed mesh, placed (PlacedShape::place_mesh).
 class MeshSolid {
 public:
@@ -14,9 +22,6 @@ public:
 
     // Whether the grown solid holds `x`.
     bool holds(const Vec3 &x) const { return near_surface(x) || inside(x); }
-    // As grown_core_entry (solid_geometry.hpp) for the grown solid, whose
-    // boundary a ray from outside crosses first through a grown triangle.
-    double entry(const Vec3 &origin, const Vec3 &dir, double t_max) const;
     // Whether `x` lies inside the mesh (by the parity of a ray's crossings).
     bool inside(const Vec3 &x) const;
     // Whether a triangle lies within `radius` of `x`.

@@ -5,6 +5,10 @@
 #include "self_filter/ray_entry.hpp"
 #include "self_filter/solid_geometry.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace octoprox {
 namespace {
 
@@ -20,6 +24,17 @@ bool segment_meets(const Ball &ball, const Vec3 &origin, const Vec3 &dir, double
     double t = length2 > 0.0 ? to_center.dot(dir) / length2 : 0.0;
     t = t < 0.0 ? 0.0 : (t > t_max ? t_max : t);
     return (to_center - t * dir).squaredNorm() <= ball.radius * ball.radius;
+}
+
+// Where the ray origin + t * dir first reaches the ball, t >= 0 (0 from
+// inside it); infinity when it never does.
+double ball_entry(const Ball &ball, const Vec3 &origin, const Vec3 &dir) {
+    const Vec3 m = origin - ball.center;
+    const double a = dir.squaredNorm(), b = m.dot(dir), c = m.squaredNorm() - ball.radius * ball.radius;
+    if (c <= 0.0) return 0.0;
+    const double discriminant = b * b - a * c;
+    if (discriminant < 0.0 || b >= 0.0) return std::numeric_limits<double>::infinity();
+    return (-b - std::sqrt(discriminant)) / a;
 }
 
 // The core's box in the frame of core.center and core.axes (every kind
@@ -53,15 +68,20 @@ FilterSolid solid_of(const PlacedShape &shape, const LinkSet &robot, double robo
     if (shape.kind == ShapeKind::kMesh) {
         shape.place_mesh();
         solid.closed_mesh = shape.def->closed;
+        if (solid.closed_mesh)
+            solid.faces = shape.def->faces.get([&] { return build_mesh_faces(shape.def->vertices, shape.def->triangles); });
     }
     return solid;
 }
 
 // A hull's points placed at the shape's pose: the hull's vertices among
 // the shape's (hull_vertices.hpp), found once per shape.
+std::vector<Vec3> hull_local_vertices(const ShapeDef &def) {
+    return def.hull_vertices.get([&] { return hull_vertex_superset(def.vertices); });
+}
+
 std::vector<Vec3> placed_hull(const PlacedShape &shape) {
-    const ShapeDef &def = *shape.def;
-    const std::vector<Vec3> local = def.hull_vertices.get([&] { return hull_vertex_superset(def.vertices); });
+    const std::vector<Vec3> local = hull_local_vertices(*shape.def);
     std::vector<Vec3> placed(local.size());
     for (size_t i = 0; i < local.size(); ++i) placed[i] = shape.core.axes * local[i] + shape.core.center;
     return placed;
@@ -82,7 +102,9 @@ bool FilterSolid::holds(const Vec3 &x, double grow) const {
 }
 
 double FilterSolid::entry(const Vec3 &origin, const Vec3 &dir, double t_max) const {
-    if (closed_mesh) return MeshSolid(*shape, radius).entry(origin, dir, t_max);
+    if (closed_mesh)
+        return grown_faces_entry(*faces, shape->core, radius, origin, dir, t_max);
+    if (hull_faces) return grown_faces_entry(*hull_faces, core, radius, origin, dir, t_max);
     if (has_closed_form_entry(core)) return closed_form_entry(core, radius + kEntryTouch, origin, dir, t_max);
     return grown_core_entry(core, radius, origin, dir, t_max);
 }
@@ -96,6 +118,7 @@ PaddedRobot::PaddedRobot(const LinkSet &robot, double robot_padding, const Vec3 
             // The core points into hulls_' inner vector, whose buffer stays
             // where it is when hulls_ grows (its vectors are moved).
             hulls_.push_back(placed_hull(shape));
+            solid.hull_faces = shape.def->hull_faces.get([&] { return build_hull_faces(hull_local_vertices(*shape.def)); });
             solid.core.kind = ConvexKind::kHull;
             solid.core.hull = hulls_.back().data();
             solid.core.hull_count = hulls_.back().size();
@@ -130,10 +153,26 @@ RayCut PaddedRobot::cut(const Vec3 &end, bool end_is_point) const {
     }
     const uint32_t *first, *last;
     bins_.candidates(dir, first, last);
+    // The candidates in the order the ray reaches their balls: an entry
+    // found early cuts the ray short for the solids behind it.
+    Candidate order[kOrdered];
+    size_t count = 0;
+    bool ordered = true;
+    const auto add = [&](uint32_t index) {
+        if (count == kOrdered) ordered = false;
+        if (ordered) order[count++] = Candidate{ball_entry(balls_[index], origin_, dir), index};
+    };
+    for (const uint32_t *at = first; at != last; ++at) add(*at);
+    for (const uint32_t index : bins_.everywhere()) add(index);
     double best_t = 1.0;
     bool entered = false, on_robot = false;
-    for (; first != last; ++first) consider(*first, end, dir, end_is_point, best_t, entered, on_robot);
-    for (const uint32_t index : bins_.everywhere()) consider(index, end, dir, end_is_point, best_t, entered, on_robot);
+    if (ordered) {
+        std::sort(order, order + count, [](const Candidate &a, const Candidate &b) { return a.t0 < b.t0; });
+        for (size_t i = 0; i < count; ++i) consider(order[i].index, end, dir, end_is_point, best_t, entered, on_robot);
+    } else {
+        for (; first != last; ++first) consider(*first, end, dir, end_is_point, best_t, entered, on_robot);
+        for (const uint32_t index : bins_.everywhere()) consider(index, end, dir, end_is_point, best_t, entered, on_robot);
+    }
     if (on_robot) return RayCut{RayCut::kOnRobot, entered ? best_t : 0.0};
     if (entered) return RayCut{RayCut::kShadowed, best_t};
     return cut;

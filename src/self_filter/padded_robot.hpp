@@ -10,6 +10,7 @@
 #include "robot/linkset.hpp"
 #include "self_filter/direction_bins.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace octoprox {
@@ -19,6 +20,8 @@ struct FilterSolid {
     const PlacedShape *shape = nullptr;
     Convex core;               // every solid but a closed mesh (an open mesh: its vertices' hull)
     bool closed_mesh = false;  // the mesh's triangles bound the solid
+    std::shared_ptr<const MeshFaces> faces;  // a closed mesh's (ShapeDef::faces)
+    std::shared_ptr<const MeshFaces> hull_faces;  // a hull's, when it spans a volume (ShapeDef::hull_faces)
     double radius = 0.0;       // the ball grown onto the core: inflation plus robot_padding
     double solid_radius = 0.0; // the same without any padding (the unpadded solid)
     bool holds_origin = false; // the grown solid holds the sensor: it shadows nothing
@@ -44,6 +47,12 @@ public:
     const std::vector<FilterSolid> &solids() const { return solids_; }
 
 private:
+    // Up to this many candidate solids a ray are taken nearest first.
+    static constexpr size_t kOrdered = 64;
+    struct Candidate {
+        double t0;
+        uint32_t index;
+    };
     void consider(uint32_t index, const Vec3 &end, const Vec3 &dir, bool end_is_point, double &best_t, bool &entered,
                   bool &on_robot) const;
 

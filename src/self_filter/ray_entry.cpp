@@ -74,6 +74,33 @@ void face_hits(const Vec3 v[3], double radius, const Vec3 &origin, const Vec3 &d
 
 }  // namespace
 
+double face_entry(const MeshFace &face, double radius, const Vec3 &origin, const Vec3 &dir, double t_max) {
+    FirstHit hit{t_max};
+    if (face.area2 > 0.0) {
+        const double height = face.normal.dot(origin) - face.offset, speed = face.normal.dot(dir);
+        // From outside its grown slab, which holds all this face tests, the
+        // ray meets nothing of the face before the slab's near plane: none
+        // when it reaches that plane late or never, the plane's point when
+        // it lies over the triangle.  From inside the slab the planes are
+        // exits, and the ray comes in across an edge's or a vertex's piece.
+        if (std::fabs(height) > radius) {
+            if (height * speed >= 0.0) return -1.0;
+            const double side = height > 0.0 ? radius : -radius;
+            const double t = (side - height) / speed;
+            if (!(t <= t_max)) return -1.0;
+            const Vec3 e1 = face.v[1] - face.v[0], e2 = face.v[2] - face.v[0];
+            const Vec3 q = origin + t * dir - side * face.normal - face.v[0];
+            const double u = face.normal.dot(q.cross(e2)) / face.area2, w = face.normal.dot(e1.cross(q)) / face.area2;
+            if (u >= 0.0 && w >= 0.0 && u + w <= 1.0) return t;
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (face.edges & (1u << k)) cylinder_hit(face.v[k], face.v[(k + 1) % 3], radius, origin, dir, hit);
+        if (face.vertices & (1u << k)) sphere_hit(face.v[k], radius, origin, dir, hit);
+    }
+    return hit.t;
+}
+
 double closed_form_entry(const Convex &core, double radius, const Vec3 &origin, const Vec3 &dir, double t_max) {
     FirstHit hit{t_max};
     switch (core.kind) {

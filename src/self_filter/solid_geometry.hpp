@@ -35,6 +35,34 @@ inline bool segment_in_box(const Aabb &box, const Vec3 &origin, const Vec3 &dir,
     return true;
 }
 
+// A ray's slab test against many boxes: its reciprocal direction once.
+class RaySlabs {
+public:
+    RaySlabs(const Vec3 &origin, const Vec3 &dir) : origin_(origin), dir_(dir) {
+        for (int axis = 0; axis < 3; ++axis) inverse_[axis] = dir[axis] != 0.0 ? 1.0 / dir[axis] : 0.0;
+    }
+    // Whether the segment t in [0, t_max] meets `box` grown by `margin`;
+    // t0: where it enters.  As segment_in_box.
+    bool enters(const Aabb &box, double margin, double t_max, double &t0) const {
+        double t1 = t_max;
+        t0 = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double lo = box.lo[axis] - margin - origin_[axis], hi = box.hi[axis] + margin - origin_[axis];
+            if (dir_[axis] == 0.0) {
+                if (lo > 0.0 || hi < 0.0) return false;
+                continue;
+            }
+            double a = lo * inverse_[axis], b = hi * inverse_[axis];
+            if (a > b) std::swap(a, b);
+            t0 = a > t0 ? a : t0, t1 = b < t1 ? b : t1;
+        }
+        return t0 <= t1;
+    }
+
+private:
+    Vec3 origin_, dir_, inverse_;
+};
+
 // Whether the core grown by `radius` holds `x` (its distance to the core
 // is at most `radius`).
 inline bool grown_core_holds(const Convex &core, double radius, const Vec3 &x) {
