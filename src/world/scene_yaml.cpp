@@ -8,7 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <utility>
+#include <unordered_map>
 
 namespace octoprox {
 namespace {
@@ -86,8 +86,9 @@ private:
     World &world_;
     int first_line_ = 0;
     size_t budget_;
-    // fixed_frame_transforms: each child frame's pose in the map frame.
-    std::vector<std::pair<std::string, Pose>> frames_;
+    // fixed_frame_transforms: each child frame's pose in the map frame (a
+    // hash map: a scene may hold as many frames as objects).
+    std::unordered_map<std::string, Pose> frames_;
 };
 
 void YamlScene::spend(const YAML::Node &node, const std::string &field) {
@@ -341,15 +342,15 @@ void YamlScene::fixed_frames(const YAML::Node &root, bool is_diff) {
         placed.has_pose = true;
         placed.pose = scene_pose(raw.position, raw.quaternion, where(transform, f + ".transform", list[i]));
         place_in_frame(parent, placed);
-        frames_.emplace_back(name, placed.pose);
+        frames_[name] = placed.pose;  // a later transform of the same frame replaces it
     }
 }
 
 // An object whose header.frame_id names a fixed frame is placed by it:
 // its pose, or (without one) its shapes' poses, are in that frame.
 void YamlScene::place_in_frame(const std::string &frame, SceneObjectUpdate &u) const {
-    const auto found = std::find_if(frames_.rbegin(), frames_.rend(), [&](const auto &f) { return f.first == frame; });
-    if (frame.empty() || found == frames_.rend()) return;
+    const auto found = frame.empty() ? frames_.end() : frames_.find(frame);
+    if (found == frames_.end()) return;
     const Pose &in_map = found->second;
     if (u.has_pose || (u.shapes.empty() && u.shape_poses.empty())) {
         u.pose = u.has_pose ? compose(in_map, u.pose) : in_map;
