@@ -126,6 +126,36 @@ int report_dense(const opx_ompl::CheckScene &check, const std::vector<std::vecto
     return 1;
 }
 
+// A start or goal in collision has no plan: say what touches what.
+bool ends_are_free(og::SimpleSetup &setup, const opx_ompl::Pr2Scene &scene) {
+    const ob::ProblemDefinitionPtr &problem = setup.getProblemDefinition();
+    const ob::State *goal = problem->getGoal()->as<ob::GoalState>()->getState();
+    const ob::SpaceInformationPtr &si = setup.getSpaceInformation();
+    if (si->isValid(problem->getStartState(0)) && si->isValid(goal)) return true;
+    opx_ompl::explain_collisions(scene.check, std::vector<double>(kStart, kStart + opx_ompl::kArmJoints), "start");
+    opx_ompl::explain_collisions(scene.check, std::vector<double>(kGoal, kGoal + opx_ompl::kArmJoints), "goal");
+    std::printf("FAILED: the start or the goal collides\n");
+    return false;
+}
+
+// What planning checked, before simplifying adds its own checks.
+struct PlanFigures {
+    double ms = 0.0;
+    uint64_t states = 0, motion_configurations = 0, motions = 0;
+    size_t waypoints = 0;
+};
+
+void print_plan(const Options &o, og::SimpleSetup &setup, const opx_ompl::CheckScene &check, const PlanFigures &f,
+                const opx_ompl::CheckCounts &counts, const std::vector<std::vector<double>> &rows) {
+    std::printf("planner: RRTConnect, seed %lu, motions checked every %.3f rad\n", o.seed, check.resolution);
+    std::printf("planning time: %.1f ms; %llu configurations checked (%llu states, %llu in %llu motions)\n", f.ms,
+                (unsigned long long)(f.states + f.motion_configurations), (unsigned long long)f.states,
+                (unsigned long long)f.motion_configurations, (unsigned long long)f.motions);
+    std::printf("simplifying: %.1f ms, %zu waypoints to %zu, %llu configurations checked in all\n",
+                setup.getLastSimplificationTime() * 1e3, f.waypoints, rows.size(), (unsigned long long)counts.total());
+    print_path(rows);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -137,39 +167,22 @@ int main(int argc, char **argv) {
     if (const int status = opx_ompl::load_pr2_scene(o.data_dir, o.resolution, scene)) return status;
     std::printf("OctoProx %s with OMPL %d.%d.%d: the PR2's right arm, a real RGB-D frame at %g cm (%llu occupied "
                 "cells), 2 world objects, self-collision with pr2.srdf\n",
-                opx_version(), OMPL_MAJOR_VERSION, OMPL_MINOR_VERSION, OMPL_PATCH_VERSION, o.resolution * 100.0, (unsigned long long)scene.occupied_cells);
+                opx_version(), OMPL_MAJOR_VERSION, OMPL_MINOR_VERSION, OMPL_PATCH_VERSION, o.resolution * 100.0,
+                (unsigned long long)scene.occupied_cells);
     auto counts = std::make_shared<opx_ompl::CheckCounts>();
     og::SimpleSetup setup = make_setup(scene, counts);
-    // A start or goal in collision has no plan: say what touches what.
-    const ob::ProblemDefinitionPtr &problem = setup.getProblemDefinition();
-    const ob::State *goal_state = problem->getGoal()->as<ob::GoalState>()->getState();
-    if (!setup.getSpaceInformation()->isValid(problem->getStartState(0)) ||
-        !setup.getSpaceInformation()->isValid(goal_state)) {
-        opx_ompl::explain_collisions(scene.check, std::vector<double>(kStart, kStart + opx_ompl::kArmJoints), "start");
-        opx_ompl::explain_collisions(scene.check, std::vector<double>(kGoal, kGoal + opx_ompl::kArmJoints), "goal");
-        std::printf("FAILED: the start or the goal collides\n");
-        return 1;
-    }
+    if (!ends_are_free(setup, scene)) return 1;
     counts->states = 0;
     const ob::PlannerStatus solved = setup.solve(o.budget);
-    const uint64_t planning_checks = counts->total(), planning_states = counts->states,
-                   planning_motion_configurations = counts->motion_configurations, planning_motions = counts->motions;
     if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
         std::printf("FAILED: no plan within %g s (%s); %llu configurations checked\n", o.budget,
-                    solved.asString().c_str(), (unsigned long long)planning_checks);
+                    solved.asString().c_str(), (unsigned long long)counts->total());
         return 1;
     }
-    const size_t raw_waypoints = setup.getSolutionPath().getStateCount();
+    const PlanFigures figures{setup.getLastPlanComputationTime() * 1e3, counts->states, counts->motion_configurations,
+                              counts->motions, setup.getSolutionPath().getStateCount()};
     setup.simplifySolution(o.budget);
     const std::vector<std::vector<double>> rows = waypoints_of(setup.getSolutionPath());
-    std::printf("planner: RRTConnect, seed %lu, motions checked every %.3f rad\n", o.seed, scene.check.resolution);
-    std::printf("planning time: %.1f ms; %llu configurations checked (%llu states, %llu in %llu motions)\n",
-                setup.getLastPlanComputationTime() * 1e3, (unsigned long long)planning_checks,
-                (unsigned long long)planning_states, (unsigned long long)planning_motion_configurations,
-                (unsigned long long)planning_motions);
-    std::printf("simplifying: %.1f ms, %zu waypoints to %zu, %llu configurations checked in all\n",
-                setup.getLastSimplificationTime() * 1e3, raw_waypoints, rows.size(),
-                (unsigned long long)counts->total());
-    print_path(rows);
+    print_plan(o, setup, scene.check, figures, *counts, rows);
     return report_dense(scene.check, rows);
 }
