@@ -144,18 +144,50 @@ std::vector<uint32_t> all_moving_joints(const opx_linkset *robot) {
     return joints;
 }
 
-PairResult run_pair(batch_bench::Robot &robot, const std::string &robot_name, batch_bench::Scene &scene,
-                    const opx_pose &base, const std::vector<uint32_t> &planned, const PlanOptions &options) {
+namespace {
+
+// The OctoProx side's scene: the map, the robot at `base`, its current
+// joint positions but the planned ones, self-collision, 0.01 rad motions.
+opx_ompl::CheckScene check_scene(batch_bench::Robot &robot, batch_bench::Scene &scene, const opx_pose &base,
+                                 const std::vector<uint32_t> &planned) {
     opx_ompl::CheckScene check;
     check.map = scene.tree.get();
     check.robot = robot.links.get();
     check.base_pose = base;
     size_t joints = 0;
-    opx_linkset_get_joint_positions(check.robot, nullptr, 0, &joints);
+    opx_linkset_get_joint_positions(check.robot, nullptr, 0, &joints);  // BUFFER_TOO_SMALL gives the count
     check.joint_positions.resize(joints);
     require(opx_linkset_get_joint_positions(check.robot, check.joint_positions.data(), joints, &joints),
             "opx_linkset_get_joint_positions");
     check.planned_joints = planned;
+    return check;
+}
+
+// Plans every query with both checkers, interleaved, the order alternating
+// so that neither always runs on a warmer (or busier) machine.
+PairResult plan_all(Checker &opx, Checker &fcl, const Space &s, const std::vector<Query> &queries,
+                    const PlanOptions &options, const std::string &label) {
+    std::vector<Outcome> opx_out, fcl_out;
+    PairResult result;
+    for (size_t q = 0; q < queries.size(); ++q) {
+        const uint32_t seed = static_cast<uint32_t>(options.seed * 1000003u + q);
+        if (q % 2 == 0) opx_out.push_back(solve(opx, s, queries[q], seed, options.budget));
+        fcl_out.push_back(solve(fcl, s, queries[q], seed, options.budget));
+        if (q % 2 == 1) opx_out.push_back(solve(opx, s, queries[q], seed, options.budget));
+        result.same_steps += opx_out.back().configurations == fcl_out.back().configurations;
+        std::fprintf(stderr, "\r%s: query %zu/%zu", label.c_str(), q + 1, queries.size());
+    }
+    std::fprintf(stderr, "\n");
+    result.octoprox = summarise("octoprox", "", "", opx_out);
+    result.fcl = summarise("fcl", "", "", fcl_out);
+    return result;
+}
+
+}  // namespace
+
+PairResult run_pair(batch_bench::Robot &robot, const std::string &robot_name, batch_bench::Scene &scene,
+                    const opx_pose &base, const std::vector<uint32_t> &planned, const PlanOptions &options) {
+    const opx_ompl::CheckScene check = check_scene(robot, scene, base, planned);
     const Space s = make_space(check.robot, planned);
     Checker opx{std::make_shared<ob::SpaceInformation>(s.space)}, fcl{std::make_shared<ob::SpaceInformation>(s.space)};
     auto fcl_query = std::make_shared<FclQuery>(robot, *scene.fcl_octree, check);
@@ -167,22 +199,8 @@ PairResult run_pair(batch_bench::Robot &robot, const std::string &robot_name, ba
     fcl.si->setup();
     opx_ompl::SceneQuery draw_query(check);
     const std::vector<Query> queries = draw_queries(s, draw_query, *fcl_query, options.queries, options.seed);
-    std::vector<Outcome> opx_out, fcl_out;
-    PairResult result;
-    for (size_t q = 0; q < queries.size(); ++q) {
-        const uint32_t seed = static_cast<uint32_t>(options.seed * 1000003u + q);
-        // Interleaved, the order alternating, so that neither checker
-        // always runs on a warmer (or busier) machine.
-        if (q % 2 == 0) opx_out.push_back(solve(opx, s, queries[q], seed, options.budget));
-        fcl_out.push_back(solve(fcl, s, queries[q], seed, options.budget));
-        if (q % 2 == 1) opx_out.push_back(solve(opx, s, queries[q], seed, options.budget));
-        result.same_steps += opx_out.back().configurations == fcl_out.back().configurations;
-        std::fprintf(stderr, "\r%s, %s: query %zu/%zu", robot_name.c_str(), scene.name.c_str(), q + 1,
-                     queries.size());
-    }
-    std::fprintf(stderr, "\n");
-    result.octoprox = summarise("octoprox", robot_name, scene.name, opx_out);
-    result.fcl = summarise("fcl", robot_name, scene.name, fcl_out);
+    PairResult result = plan_all(opx, fcl, s, queries, options, robot_name + ", " + scene.name);
+    for (PlanRow *row : {&result.octoprox, &result.fcl}) row->robot = robot_name, row->map = scene.name;
     return result;
 }
 
