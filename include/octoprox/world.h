@@ -113,10 +113,17 @@ OPX_API opx_status opx_linkset_attach_world_object(opx_linkset *links, uint32_t 
  * object of the same id), APPEND, REMOVE (an empty id: all) and MOVE.
  * Primitives BOX [x y z], SPHERE [radius] and CYLINDER [height, radius];
  * meshes; poses on the object and on each shape.  header.frame_id is taken
- * as the map frame.  CONE primitives and planes are refused
+ * as the map frame, unless it names a child frame of the scene's
+ * fixed_frame_transforms, whose transform then places the object.  CONE
+ * primitives, planes and meshes given as files (`resource`) are refused
  * (OPX_ERROR_UNSUPPORTED); the robot state, allowed collision matrix,
  * octomap and colours are ignored.  Several documents apply in order, one
- * that is not a diff clearing the world first.
+ * that is not a diff clearing the world first.  Robowflex's dialect
+ * (MotionBenchMaker's scenes) is read as well: positions, translations
+ * and vertices as lists [x, y, z], orientations and rotations as
+ * [x, y, z, w], primitive types as the words box, sphere, cylinder and
+ * cone, operations as add, remove, append and move (any case), triangles
+ * as bare [i, j, k].
  */
 #define OPX_SCENE_FORMAT_YAML 1
 /**

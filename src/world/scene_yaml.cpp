@@ -2,20 +2,33 @@
 
 #include "base/error.hpp"
 #include "world/scene_shapes.hpp"
-
-#include <yaml-cpp/depthguard.h>
-#include <yaml-cpp/yaml.h>
+#include "world/scene_yaml_documents.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 
 namespace octoprox {
 namespace {
 
-// SolidPrimitive types and the operations of moveit_msgs/CollisionObject.
+// SolidPrimitive types and the operations of moveit_msgs/CollisionObject,
+// each also written as its word (robowflex's YAML, MotionBenchMaker's
+// scenes), in any case.
 constexpr int kBox = 1, kSphere = 2, kCylinder = 3, kCone = 4;
+constexpr const char *kPrimitiveWords[] = {"box", "sphere", "cylinder", "cone"};  // 1 to 4
+constexpr const char *kOperationWords[] = {"add", "remove", "append", "move"};   // 0 to 3
+
+// A pose's values as written (before scene_pose checks them): all zeros
+// is MoveIt's "no pose given".
+struct RawPose {
+    Vec3 position = Vec3(0.0, 0.0, 0.0);
+    std::array<double, 4> quaternion{0.0, 0.0, 0.0, 0.0};
+    bool given() const {
+        return position != Vec3(0.0, 0.0, 0.0) || quaternion != std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
+    }
+};
 
 // YAML aliases (*name) repeat an anchored node without repeating its text,
 // and nested ones multiply: a few kilobytes could name billions of
@@ -50,14 +63,21 @@ private:
     int integer(const YAML::Node &node, const std::string &field, const YAML::Node &parent);
     std::string text(const YAML::Node &node, const std::string &field);
     YAML::Node sequence(const YAML::Node &map, const char *key, const std::string &field);
+    int word_or_integer(const YAML::Node &node, const std::string &field, const YAML::Node &parent,
+                        const char *const *words, size_t word_count, int first, const char *choices);
+    template <size_t N>
+    std::array<double, N> values(const YAML::Node &node, const std::string &field, const char *const (&keys)[N],
+                                 const char *layout);
     Vec3 point(const YAML::Node &node, const std::string &field);
+    RawPose raw_pose(const YAML::Node &node, const std::string &field, const char *position, const char *rotation);
     Pose pose(const YAML::Node &node, const std::string &field);
-    bool pose_given(const YAML::Node &node, const std::string &field);
     std::vector<Pose> poses(const YAML::Node &object, const char *key, const std::string &field);
     ShapeDef primitive(const YAML::Node &node, const std::string &field);
     ShapeDef mesh(const YAML::Node &node, const std::string &field);
     void shapes(const YAML::Node &object, const std::string &field, SceneObjectUpdate &update);
     SceneObjectUpdate object(const YAML::Node &node, const std::string &field);
+    void fixed_frames(const YAML::Node &root, bool is_diff);
+    void place_in_frame(const std::string &frame, SceneObjectUpdate &update) const;
 
     // Spends one element of the budget (see kElementsPerByte).
     void spend(const YAML::Node &node, const std::string &field);
@@ -66,6 +86,9 @@ private:
     World &world_;
     int first_line_ = 0;
     size_t budget_;
+    // fixed_frame_transforms: each child frame's pose in the map frame (a
+    // hash map: a scene may hold as many frames as objects).
+    std::unordered_map<std::string, Pose> frames_;
 };
 
 void YamlScene::spend(const YAML::Node &node, const std::string &field) {
@@ -107,37 +130,67 @@ std::string YamlScene::text(const YAML::Node &node, const std::string &field) {
 YAML::Node YamlScene::sequence(const YAML::Node &map, const char *key, const std::string &field) {
     const YAML::Node node = child(map, key);
     if (!node.IsDefined() || node.IsNull()) return YAML::Node(YAML::NodeType::Sequence);
-    if (!node.IsSequence()) scene_fail(where(node, field + "." + key), "not a list");
+    if (!node.IsSequence()) scene_fail(where(node, field.empty() ? key : field + "." + key), "not a list");
     return node;
 }
 
+// A number, or one of `words` (any case) standing for first, first + 1, ...
+int YamlScene::word_or_integer(const YAML::Node &node, const std::string &field, const YAML::Node &parent,
+                               const char *const *words, size_t word_count, int first, const char *choices) {
+    if (node.IsDefined() && node.IsScalar()) {
+        std::string word = node.Scalar();
+        std::transform(word.begin(), word.end(), word.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        for (size_t i = 0; i < word_count; ++i)
+            if (word == words[i]) return first + static_cast<int>(i);
+        double unused = 0.0;
+        if (!YAML::convert<double>::decode(node, unused))
+            scene_fail(where(node, field), "'" + node.Scalar() + "' is none of " + choices);
+    }
+    return integer(node, field, parent);
+}
+
+// N numbers as a map of `keys` (ROS message fields left out are zero) or
+// as a list of N (robowflex's YAML, MotionBenchMaker's scenes); null is
+// all zeros.
+template <size_t N>
+std::array<double, N> YamlScene::values(const YAML::Node &node, const std::string &field,
+                                        const char *const (&keys)[N], const char *layout) {
+    std::array<double, N> out{};
+    if (!node.IsDefined() || node.IsNull()) return out;
+    if (node.IsSequence()) {
+        if (node.size() != N)
+            scene_fail(where(node, field), format("%zu values; a list [%s] or a map of %s", node.size(), layout, layout));
+        for (size_t i = 0; i < N; ++i) out[i] = number(node[i], format("%s[%zu]", field.c_str(), i), node);
+        return out;
+    }
+    if (!node.IsMap()) scene_fail(where(node, field), format("not a map of %s or a list [%s]", layout, layout));
+    for (size_t i = 0; i < N; ++i) out[i] = number_or_zero(node, keys[i], field);
+    return out;
+}
+
 Vec3 YamlScene::point(const YAML::Node &node, const std::string &field) {
-    if (node.IsDefined() && !node.IsNull() && !node.IsMap()) scene_fail(where(node, field), "not a map of x, y, z");
-    return Vec3(number_or_zero(node, "x", field), number_or_zero(node, "y", field), number_or_zero(node, "z", field));
+    static constexpr const char *kKeys[] = {"x", "y", "z"};
+    const std::array<double, 3> v = values(node, field, kKeys, "x, y, z");
+    return Vec3(v[0], v[1], v[2]);
+}
+
+// A geometry_msgs/Pose (`position`, `orientation`) or Transform
+// (`translation`, `rotation`).
+RawPose YamlScene::raw_pose(const YAML::Node &node, const std::string &field, const char *position,
+                            const char *rotation) {
+    if (node.IsDefined() && !node.IsNull() && !node.IsMap())
+        scene_fail(where(node, field), format("not a map of %s and %s", position, rotation));
+    static constexpr const char *kKeys[] = {"x", "y", "z", "w"};
+    RawPose raw;
+    raw.position = point(child(node, position), field + "." + position);
+    raw.quaternion = values(child(node, rotation), field + "." + rotation, kKeys, "x, y, z, w");
+    return raw;
 }
 
 Pose YamlScene::pose(const YAML::Node &node, const std::string &field) {
-    if (node.IsDefined() && !node.IsNull() && !node.IsMap())
-        scene_fail(where(node, field), "not a map of position and orientation");
-    const YAML::Node orientation = child(node, "orientation");
-    const std::string o = field + ".orientation";
-    if (orientation.IsDefined() && !orientation.IsNull() && !orientation.IsMap())
-        scene_fail(where(orientation, o), "not a map of x, y, z, w");
-    const std::array<double, 4> q{number_or_zero(orientation, "x", o), number_or_zero(orientation, "y", o),
-                                  number_or_zero(orientation, "z", o), number_or_zero(orientation, "w", o)};
-    return scene_pose(point(child(node, "position"), field + ".position"), q, where(node, field));
-}
-
-// MoveIt takes a pose of all zeros (orientation included) as "not given";
-// `node` has been read by pose() already.
-bool YamlScene::pose_given(const YAML::Node &node, const std::string &field) {
-    if (!node.IsDefined() || node.IsNull()) return false;
-    const YAML::Node position = child(node, "position"), orientation = child(node, "orientation");
-    for (const char *key : {"x", "y", "z"})
-        if (number_or_zero(position, key, field + ".position") != 0.0) return true;
-    for (const char *key : {"x", "y", "z", "w"})
-        if (number_or_zero(orientation, key, field + ".orientation") != 0.0) return true;
-    return false;
+    const RawPose raw = raw_pose(node, field, "position", "orientation");
+    return scene_pose(raw.position, raw.quaternion, where(node, field));
 }
 
 std::vector<Pose> YamlScene::poses(const YAML::Node &object, const char *key, const std::string &field) {
@@ -155,7 +208,8 @@ ShapeDef YamlScene::primitive(const YAML::Node &node, const std::string &field) 
     spend(node, field);
     if (!node.IsMap()) scene_fail(where(node, field), "not a map of type and dimensions");
     const YAML::Node type_node = child(node, "type");
-    const int type = integer(type_node, field + ".type", node);
+    const int type = word_or_integer(type_node, field + ".type", node, kPrimitiveWords, 4, kBox,
+                                     "1 or box, 2 or sphere, 3 or cylinder, 4 or cone");
     const YAML::Node dims = sequence(node, "dimensions", field);
     const std::string dims_field = field + ".dimensions";
     std::vector<double> d;
@@ -180,6 +234,11 @@ ShapeDef YamlScene::primitive(const YAML::Node &node, const std::string &field) 
 ShapeDef YamlScene::mesh(const YAML::Node &node, const std::string &field) {
     spend(node, field);
     if (!node.IsMap()) scene_fail(where(node, field), "not a map of vertices and triangles");
+    const YAML::Node resource = child(node, "resource");
+    if (resource.IsDefined() && !child(node, "vertices").IsDefined())
+        scene_fail(where(resource, field + ".resource"),
+                   "'" + text(resource, field + ".resource") + "': mesh files are not read; give the vertices and triangles",
+                   OPX_ERROR_UNSUPPORTED);
     const YAML::Node vertices = sequence(node, "vertices", field), triangles = sequence(node, "triangles", field);
     std::vector<Vec3> points;
     for (size_t i = 0; i < vertices.size(); ++i) {
@@ -191,13 +250,16 @@ ShapeDef YamlScene::mesh(const YAML::Node &node, const std::string &field) {
     for (size_t t = 0; t < triangles.size(); ++t) {
         const std::string f = format("%s.triangles[%zu]", field.c_str(), t);
         spend(triangles[t], f);
-        const YAML::Node indices = sequence(triangles[t], "vertex_indices", f);
-        if (indices.size() != 3) scene_fail(where(triangles[t], f + ".vertex_indices"), "not 3 vertex indices");
+        // A shape_msgs/MeshTriangle, or its three indices alone (robowflex).
+        const bool bare = triangles[t].IsSequence();
+        const std::string fi = bare ? f : f + ".vertex_indices";
+        const YAML::Node indices = bare ? triangles[t] : sequence(triangles[t], "vertex_indices", f);
+        if (indices.size() != 3) scene_fail(where(triangles[t], fi), "not 3 vertex indices");
         std::array<uint32_t, 3> face{};
         for (size_t k = 0; k < 3; ++k) {
-            const int index = integer(indices[k], format("%s.vertex_indices[%zu]", f.c_str(), k), indices);
+            const int index = integer(indices[k], format("%s[%zu]", fi.c_str(), k), indices);
             if (index < 0 || static_cast<size_t>(index) >= points.size())
-                scene_fail(where(indices[k], f + ".vertex_indices"),
+                scene_fail(where(indices[k], fi),
                            format("vertex %d does not exist (the mesh has %zu vertices)", index, points.size()));
             face[k] = static_cast<uint32_t>(index);
         }
@@ -237,22 +299,66 @@ SceneObjectUpdate YamlScene::object(const YAML::Node &node, const std::string &f
     SceneObjectUpdate u;
     u.where = where(node, field);
     u.id = text(child(node, "id"), field + ".id");
-    text(child(child(node, "header"), "frame_id"), field + ".header.frame_id");  // taken as the map frame
+    const std::string frame = text(child(child(node, "header"), "frame_id"), field + ".header.frame_id");
     const YAML::Node operation = child(node, "operation");
-    const int op = operation.IsDefined() ? integer(operation, field + ".operation", node) : 0;
-    if (op < 0 || op > 3)
-        scene_fail(where(operation, field + ".operation"), format("%d is not 0 ADD, 1 REMOVE, 2 APPEND or 3 MOVE", op));
+    const char *choices = "0 or add, 1 or remove, 2 or append, 3 or move";
+    const int op = operation.IsDefined() && !operation.IsNull()
+                       ? word_or_integer(operation, field + ".operation", node, kOperationWords, 4, 0, choices)
+                       : 0;
+    if (op < 0 || op > 3) scene_fail(where(operation, field + ".operation"), format("%d is none of %s", op, choices));
     u.operation = static_cast<SceneOperation>(op);
     if (u.id.empty() && u.operation != SceneOperation::kRemove) scene_fail(where(node, field + ".id", node), "empty");
     const YAML::Node pose_node = child(node, "pose");
-    if (pose_node.IsDefined() && !pose_node.IsNull()) u.pose = pose(pose_node, field + ".pose");
-    u.has_pose = pose_given(pose_node, field + ".pose");
+    const RawPose raw = raw_pose(pose_node, field + ".pose", "position", "orientation");
+    u.has_pose = raw.given();
+    if (u.has_pose) u.pose = scene_pose(raw.position, raw.quaternion, where(pose_node, field + ".pose"));
     if (u.operation == SceneOperation::kAdd || u.operation == SceneOperation::kAppend) shapes(node, field, u);
     if (u.operation == SceneOperation::kMove) {
         u.shape_poses = poses(node, "primitive_poses", field);
         for (const Pose &p : poses(node, "mesh_poses", field)) u.shape_poses.push_back(p);
     }
+    place_in_frame(frame, u);
     return u;
+}
+
+// geometry_msgs/TransformStamped[]: child_frame_id's pose in its
+// header.frame_id, which is the map frame or a fixed frame listed before.
+// A document without them keeps the frames of the one before when it is
+// a diff.
+void YamlScene::fixed_frames(const YAML::Node &root, bool is_diff) {
+    const YAML::Node list = sequence(root, "fixed_frame_transforms", "");
+    if (list.size() == 0 && is_diff) return;
+    frames_.clear();
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string f = format("fixed_frame_transforms[%zu]", i);
+        spend(list[i], f);
+        if (!list[i].IsMap()) scene_fail(where(list[i], f), "not a map (a geometry_msgs/TransformStamped)");
+        const std::string name = text(child(list[i], "child_frame_id"), f + ".child_frame_id");
+        if (name.empty()) scene_fail(where(list[i], f + ".child_frame_id", list[i]), "empty");
+        const std::string parent = text(child(child(list[i], "header"), "frame_id"), f + ".header.frame_id");
+        const YAML::Node transform = child(list[i], "transform");
+        const RawPose raw = raw_pose(transform, f + ".transform", "translation", "rotation");
+        SceneObjectUpdate placed;
+        placed.has_pose = true;
+        placed.pose = scene_pose(raw.position, raw.quaternion, where(transform, f + ".transform", list[i]));
+        place_in_frame(parent, placed);
+        frames_[name] = placed.pose;  // a later transform of the same frame replaces it
+    }
+}
+
+// An object whose header.frame_id names a fixed frame is placed by it:
+// its pose, or (without one) its shapes' poses, are in that frame.
+void YamlScene::place_in_frame(const std::string &frame, SceneObjectUpdate &u) const {
+    const auto found = frame.empty() ? frames_.end() : frames_.find(frame);
+    if (found == frames_.end()) return;
+    const Pose &in_map = found->second;
+    if (u.has_pose || (u.shapes.empty() && u.shape_poses.empty())) {
+        u.pose = u.has_pose ? compose(in_map, u.pose) : in_map;
+        u.has_pose = true;
+        return;
+    }
+    for (ShapeDef &def : u.shapes) def.local = compose(in_map, def.local);
+    for (Pose &p : u.shape_poses) p = compose(in_map, p);
 }
 
 void YamlScene::read_document(const YAML::Node &root, int first_line) {
@@ -277,65 +383,10 @@ void YamlScene::read_document(const YAML::Node &root, int first_line) {
         }
     }
     if (!is_diff) clear_world(world_);
+    fixed_frames(root, is_diff);
     const std::string field = scene ? "world.collision_objects" : "collision_objects";
     const YAML::Node objects = sequence(scene ? world : root, "collision_objects", scene ? "world" : "");
     for (size_t i = 0; i < objects.size(); ++i) apply_update(world_, object(objects[i], format("%s[%zu]", field.c_str(), i)));
-}
-
-// A document of the text: from a "---" line (or the start) to the next.
-struct YamlPiece {
-    std::string text;
-    int first_line = 0;  // 0-based, in the whole text
-    bool has_content = false;  // more than markers, comments and blanks
-};
-
-bool starts_with(const std::string &line, const char *prefix) { return line.compare(0, std::strlen(prefix), prefix) == 0; }
-
-bool is_marker(const std::string &line) {
-    return starts_with(line, "---") && (line.size() == 3 || std::isspace(static_cast<unsigned char>(line[3])));
-}
-
-// Whether a line holds YAML content: not blank, a comment, "...", or a
-// "---" marker with nothing after it.
-bool holds_content(const std::string &line) {
-    size_t at = is_marker(line) ? 3 : 0;
-    if (at == 0 && starts_with(line, "...")) return false;
-    while (at < line.size() && std::isspace(static_cast<unsigned char>(line[at]))) ++at;
-    return at < line.size() && line[at] != '#';
-}
-
-// yaml-cpp 0.7's LoadAll can loop for ever, allocating, on malformed
-// input (a line starting with ','), so each document is parsed alone with
-// Load, the text cut at the "---" markers (which YAML does not allow at
-// the start of a line inside content).
-std::vector<YamlPiece> split_documents(const std::string &text) {
-    std::vector<YamlPiece> pieces(1);
-    int line_number = 0;
-    for (size_t at = 0; at < text.size(); ++line_number) {
-        const size_t end = std::min(text.find('\n', at), text.size());
-        const std::string line = text.substr(at, end - at);
-        if (is_marker(line) && (pieces.back().has_content || !pieces.back().text.empty())) {
-            pieces.emplace_back();
-            pieces.back().first_line = line_number;
-        }
-        pieces.back().text += line + "\n";
-        pieces.back().has_content = pieces.back().has_content || holds_content(line);
-        at = end + 1;
-    }
-    return pieces;
-}
-
-[[noreturn]] void yaml_fail(const std::string &source, const YAML::Exception &error, int first_line, const char *what) {
-    const SceneWhere at{&source, error.mark.is_null() ? 0 : first_line + error.mark.line + 1, ""};
-    scene_fail(at, what + error.msg);
-}
-
-// yaml-cpp refuses lists and maps nested beyond its parser's limit (500
-// levels in Debian's build) with the message "bad file"; say what it is.
-[[noreturn]] void yaml_too_deep(const std::string &source, const YAML::DeepRecursion &error, int first_line) {
-    const SceneWhere at{&source, error.mark.is_null() ? 0 : first_line + error.mark.line + 1, ""};
-    scene_fail(at, format("lists and maps nested %d levels deep or more (the YAML reader's limit)",
-                          error.depth()));
 }
 
 }  // namespace

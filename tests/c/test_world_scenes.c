@@ -2,7 +2,9 @@
  * MoveIt planning scenes read into worlds: tests/data/scenes/kitchen.yaml
  * (a moveit_msgs/PlanningScene with every primitive type, a mesh, poses on
  * objects and on shapes, APPEND, MOVE, ADD and REMOVE) and the same scene
- * as .scene text, with and without object poses; then malformed scenes,
+ * as .scene text, with and without object poses, and in robowflex's
+ * dialect (kitchen_robowflex.yaml: lists for poses, words for types and
+ * operations, fixed frames); then malformed scenes,
  * whose messages name the file (or "data"), the line and the field.
  */
 #include "opx_query_test.h"
@@ -79,6 +81,41 @@ static void test_yaml_planning_scene(void **state) {
     opx_world *world = load("kitchen.yaml");
     assert_kitchen(world);
     opx_world_destroy(world);
+}
+
+static void test_yaml_robowflex_dialect(void **state) {
+    (void)state;
+    opx_world *world = load("kitchen_robowflex.yaml");
+    assert_kitchen(world);
+    opx_world_destroy(world);
+}
+
+#define FRAMED_BALL(frame, pose)                                                               \
+    "fixed_frame_transforms:\n"                                                                \
+    "  - {child_frame_id: f, transform: {translation: [1, 0, 0], rotation: [0, 0, 0.7071067811865476, 0.7071067811865476]}}\n" \
+    "  - {header: {frame_id: f}, child_frame_id: g, transform: {translation: {x: 0, y: 1, z: 0}}}\n" \
+    "world:\n  collision_objects:\n    - id: ball\n      header: {frame_id: " frame "}\n"     \
+    "      primitives: [{type: sphere, dimensions: [0.1]}]\n" pose
+
+/* An object whose header names a fixed frame is placed by it: f turns a
+ * quarter about z at (1, 0, 0); g is 1 m along f's y, at (0, 0, 0). */
+static void test_yaml_fixed_frames(void **state) {
+    (void)state;
+    static const struct {
+        const char *text;
+        double x, y, z;
+    } cases[] = {
+        {FRAMED_BALL("f", "      pose: {position: [1, 0, 0], orientation: [0, 0, 0, 1]}\n"), 1.0, 1.0, 0.0},
+        {FRAMED_BALL("f", "      primitive_poses: [{position: [0, 2, 0]}]\n"), -1.0, 0.0, 0.0},
+        {FRAMED_BALL("g", "      pose: {position: [0, 0, 3]}\n"), 0.0, 0.0, 3.0},
+        {FRAMED_BALL("map", "      pose: {position: [0, 0, 3]}\n"), 0.0, 0.0, 3.0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        opx_world *world = NULL;
+        assert_ok(opx_world_load_scene_memory(cases[i].text, strlen(cases[i].text), OPX_SCENE_FORMAT_YAML, &world));
+        assert_probe(world, "ball", cases[i].x, cases[i].y, cases[i].z + 0.5, 0.39);
+        opx_world_destroy(world);
+    }
 }
 
 static void test_scene_text_with_object_poses(void **state) {
@@ -159,6 +196,40 @@ static void test_malformed_yaml(void **state) {
     EXPECT_YAML("name: robot only\nrobot_state: {}\n", OPX_ERROR_CORRUPT, "line 1", "world");
     EXPECT_YAML("- 1\n- 2\n", OPX_ERROR_CORRUPT, "line 1", "not a map");
     EXPECT_YAML("", OPX_ERROR_CORRUPT, "no YAML document");
+}
+
+/* robowflex's dialect keeps errors naming the line and the field. */
+static void test_malformed_robowflex_yaml(void **state) {
+    (void)state;
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: torus, dimensions: [0.1]}]\n", OPX_ERROR_CORRUPT, "line 4",
+                "primitives[0].type", "'torus' is none of 1 or box");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: Cone, dimensions: [0.7, 0.1]}]\n", OPX_ERROR_UNSUPPORTED,
+                "line 4", "primitives[0].type", "CONE");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: box, dimensions: [0.1, 0.2, 0.3]}]\n      pose:\n"
+                "        orientation: [0, 0, 1]\n",
+                OPX_ERROR_CORRUPT, "line 6", "collision_objects[0].pose.orientation", "3 values; a list [x, y, z, w]");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: box, dimensions: [0.1, 0.2, 0.3]}]\n      pose:\n"
+                "        position: [0, 0, up]\n",
+                OPX_ERROR_CORRUPT, "line 6", "pose.position[2]", "'up' is not a number");
+    EXPECT_YAML(OBJECT_HEAD "      primitives: [{type: sphere, dimensions: [0.1]}]\n      pose: {position: \"0 0 1\"}\n",
+                OPX_ERROR_CORRUPT, "line 5", "pose.position", "not a map of x, y, z or a list [x, y, z]");
+    EXPECT_YAML(OBJECT_HEAD "      operation: jump\n", OPX_ERROR_CORRUPT, "line 4", "operation",
+                "'jump' is none of 0 or add");
+    EXPECT_YAML(OBJECT_HEAD "      meshes:\n        - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                "          triangles: [[0, 1]]\n",
+                OPX_ERROR_CORRUPT, "line 6", "meshes[0].triangles[0]", "not 3 vertex indices");
+    EXPECT_YAML(OBJECT_HEAD "      meshes:\n        - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                "          triangles: [[0, 1, 4]]\n",
+                OPX_ERROR_CORRUPT, "line 6", "meshes[0].triangles[0]", "vertex 4");
+    EXPECT_YAML(OBJECT_HEAD "      meshes:\n        - {resource: \"package://kitchen/meshes/counter.stl\", dimensions: [1, 1, 1]}\n",
+                OPX_ERROR_UNSUPPORTED, "line 5", "meshes[0].resource", "counter.stl", "mesh files are not read");
+    EXPECT_YAML("fixed_frame_transforms:\n  - transform: {translation: [0, 0, 0]}\n" OBJECT_HEAD,
+                OPX_ERROR_CORRUPT, "line 2", "fixed_frame_transforms[0].child_frame_id", "empty");
+    EXPECT_YAML("fixed_frame_transforms:\n  - child_frame_id: f\n    transform: {rotation: [0, 0, 0, .nan]}\n"
+                OBJECT_HEAD,
+                OPX_ERROR_CORRUPT, "line 3", "fixed_frame_transforms[0].transform", "not finite");
+    EXPECT_YAML("fixed_frame_transforms: {child_frame_id: f}\n" OBJECT_HEAD, OPX_ERROR_CORRUPT, "line 1",
+                "fixed_frame_transforms", "not a list");
 }
 
 static uint32_t yaml_object_count(const char *text) {
@@ -271,6 +342,10 @@ static void test_malformed_files_name_the_file(void **state) {
     expect_failure(OPX_ERROR_CORRUPT, "opx_world_load_scene_file", "cylinder_missing_radius.yaml: line 9: "
                    "world.collision_objects[0].primitives[0].dimensions",
                    opx_world_load_scene_file(path, &world));
+    snprintf(path, sizeof path, "%s/box_position_too_short.yaml", OPX_SCENE_DIR);
+    expect_failure(OPX_ERROR_CORRUPT, "opx_world_load_scene_file", "box_position_too_short.yaml: line 10: "
+                   "world.collision_objects[0].primitive_poses[0].position: 2 values",
+                   opx_world_load_scene_file(path, &world));
     snprintf(path, sizeof path, "%s/unknown_shape.scene", OPX_SCENE_DIR);
     expect_failure(OPX_ERROR_CORRUPT, "opx_world_load_scene_file", "unknown_shape.scene: line 6: object 'post' shape 0",
                    opx_world_load_scene_file(path, &world));
@@ -280,9 +355,12 @@ static void test_malformed_files_name_the_file(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_yaml_planning_scene),
+        cmocka_unit_test(test_yaml_robowflex_dialect),
+        cmocka_unit_test(test_yaml_fixed_frames),
         cmocka_unit_test(test_scene_text_with_object_poses),
         cmocka_unit_test(test_scene_text_without_object_poses),
         cmocka_unit_test(test_malformed_yaml),
+        cmocka_unit_test(test_malformed_robowflex_yaml),
         cmocka_unit_test(test_yaml_documents),
         cmocka_unit_test(test_yaml_aliases),
         cmocka_unit_test(test_yaml_nested_too_deep),

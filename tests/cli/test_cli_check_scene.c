@@ -2,7 +2,8 @@
  * cli_check_scene: `octoprox check --scene FILE` adds a MoveIt planning
  * scene's objects (YAML or .scene text) to the check, with or without a
  * map: collision names the object, the distance is the library's own
- * (the nearer of the map and the objects), a malformed scene exits 3
+ * (the nearer of the map and the objects), benchmark scenes in robowflex's
+ * dialect read as the message's, a malformed scene exits 3
  * naming the file and the line, and --scene with --path is a usage error.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -122,6 +123,24 @@ static void scene_text_files_too(void **state) {
     assert_true(json_field_in(r.out, "distance", "distance") == library_distance(0.5, 0).distance);
 }
 
+/* The crate as robowflex writes it (MotionBenchMaker's scenes). */
+static void robowflex_scenes_too(void **state) {
+    static cli_result r;
+    (void)state;
+    const char *scene = write_text("crate_robowflex.yaml",
+                                   "world:\n  collision_objects:\n    - id: crate\n"
+                                   "      pose: {position: [1.0, 0.0, 0.5], orientation: [0, 0, 0, 1]}\n"
+                                   "      primitives: [{type: box, dimensions: [0.2, 0.2, 0.2]}]\n");
+    run_cli(&r, "check --scene '%s' --urdf '%s' --joints slide=0.5 --distance --json", scene, urdf_path());
+    assert_int_equal(r.code, 0);
+    assert_true(json_field_in(r.out, "distance", "distance") == library_distance(0.5, 0).distance);
+    const char *bad = write_text("bad_robowflex.yaml", "world:\n  collision_objects:\n    - id: crate\n"
+                                                       "      primitives: [{type: torus, dimensions: [0.2]}]\n");
+    run_cli(&r, "check --scene '%s' --urdf '%s'", bad, urdf_path());
+    assert_int_equal(r.code, 3);
+    assert_non_null(strstr(r.err, "bad_robowflex.yaml: line 4: world.collision_objects[0].primitives[0].type"));
+}
+
 static void bad_scenes_and_options(void **state) {
     static cli_result r;
     (void)state;
@@ -149,6 +168,7 @@ int main(void) {
         cmocka_unit_test(the_scene_alone),
         cmocka_unit_test(the_scene_beside_the_map),
         cmocka_unit_test(scene_text_files_too),
+        cmocka_unit_test(robowflex_scenes_too),
         cmocka_unit_test(bad_scenes_and_options),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -64,10 +64,14 @@ class World(Handle):
         """The objects of a MoveIt planning scene file, by its extension:
         .yaml or .yml (a moveit_msgs/PlanningScene as YAML: ADD, APPEND,
         REMOVE and MOVE in file order; BOX, SPHERE, CYLINDER primitives
-        and meshes) or .scene (MoveIt's scene text).  header.frame_id is
-        taken as the map frame.  Raises IoError, CorruptDataError (the
-        message names the file, the line and the field), UnsupportedError
-        (cones, planes)."""
+        and meshes; robowflex's dialect too, as in MotionBenchMaker's
+        scenes: poses as lists, primitive types and operations as words)
+        or .scene (MoveIt's scene text).  header.frame_id is taken as the
+        map frame unless it names one of the scene's
+        fixed_frame_transforms; the robot state and the allowed collision
+        matrix are ignored.  Raises IoError, CorruptDataError (the message
+        names the file, the line and the field), UnsupportedError (cones,
+        planes, mesh files)."""
         return cls._from(lambda out: lib.opx_world_load_scene_file(os.fsencode(path), out))
 
     @classmethod

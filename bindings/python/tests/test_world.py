@@ -82,6 +82,19 @@ class SceneFiles(unittest.TestCase):
             np.testing.assert_allclose(yaml.pose(name), text.pose(name), atol=1e-12)
             self.assertEqual(yaml.shape_count(name), text.shape_count(name))
 
+    def test_robowflex_scenes_give_the_same_world(self):
+        # Poses as lists, types and operations as words, fixed frames.
+        yaml = octoprox.World.from_scene_file(os.path.join(SCENES, "kitchen.yaml"))
+        benchmark = octoprox.World.from_scene_file(os.path.join(SCENES, "kitchen_robowflex.yaml"))
+        self.assertEqual(benchmark.names, yaml.names)
+        for name in yaml.names:
+            np.testing.assert_allclose(benchmark.pose(name), yaml.pose(name), atol=1e-12)
+            self.assertEqual(benchmark.shape_count(name), yaml.shape_count(name))
+        with self.assertRaisesRegex(octoprox.CorruptDataError,
+                                    r"box_position_too_short.yaml: line 10: "
+                                    r"world.collision_objects\[0\].primitive_poses\[0\].position: 2 values"):
+            octoprox.World.from_scene_file(os.path.join(SCENES, "box_position_too_short.yaml"))
+
     def test_bad_scenes_name_the_line_and_the_field(self):
         bad = "world:\n  collision_objects:\n    - id: post\n      primitives:\n" \
               "        - type: 3\n          dimensions: [0.7]\n"

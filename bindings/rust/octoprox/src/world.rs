@@ -100,10 +100,14 @@ impl World {
 
     /// The objects of a MoveIt planning scene file, in the format of its
     /// extension: `.yaml` or `.yml` ([`SceneFormat::Yaml`]), `.scene`
-    /// ([`SceneFormat::Text`]).  An unreadable file is an
+    /// ([`SceneFormat::Text`]); the YAML in MoveIt's message form or in
+    /// robowflex's dialect (MotionBenchMaker's scenes: poses as lists,
+    /// primitive types and operations as words), the robot state and the
+    /// allowed collision matrix ignored.  An unreadable file is an
     /// [`crate::ErrorKind::Io`] error; a malformed one
     /// [`crate::ErrorKind::Corrupt`], the message naming the file, the line
-    /// and the field; cones and planes [`crate::ErrorKind::Unsupported`].
+    /// and the field; cones, planes and mesh files
+    /// [`crate::ErrorKind::Unsupported`].
     pub fn from_scene_file(path: impl AsRef<Path>) -> Result<World> {
         let text = path.as_ref().to_string_lossy().into_owned();
         let path = to_c_string(&text, "World::from_scene_file: path")?;

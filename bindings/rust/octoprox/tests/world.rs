@@ -111,6 +111,24 @@ fn yaml_and_scene_text_give_the_same_world() {
 }
 
 #[test]
+fn robowflex_scenes_give_the_same_world() {
+    let yaml = World::from_scene_file(scenes().join("kitchen.yaml")).unwrap();
+    let benchmark = World::from_scene_file(scenes().join("kitchen_robowflex.yaml")).unwrap();
+    assert_eq!(benchmark.names().unwrap(), yaml.names().unwrap());
+    for object in 0..yaml.len() as u32 {
+        let (a, b) = (yaml.pose(object).unwrap(), benchmark.pose(object).unwrap());
+        for axis in 0..3 {
+            assert!((a.position[axis] - b.position[axis]).abs() < 1e-12, "object {object}");
+        }
+        assert_eq!(benchmark.shape_count(object).unwrap(), yaml.shape_count(object).unwrap());
+    }
+    let error = World::from_scene_file(scenes().join("box_position_too_short.yaml")).unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::Corrupt);
+    let field = "line 10: world.collision_objects[0].primitive_poses[0].position";
+    assert!(error.message().contains(field), "{}", error.message());
+}
+
+#[test]
 fn scenes_from_text_and_their_errors() {
     let text = "room\n* block\n0 0 0.5\n0 0 0 1\n1\nbox\n1 1 1\n0 0 0\n0 0 0 1\n0 0 0 0\n0\n.\n";
     let world = World::from_scene_str(text, SceneFormat::Text).unwrap();
