@@ -35,10 +35,10 @@ public:
     // The configuration at `s`, measured as far as its links can still
     // travel in the `remaining` part of the motion (0: a contact test).
     Measure measure(double s, double remaining, CertifiedAnswer &answer) {
-        ++answer.measured;
+        const bool first = answer.measured++ == 0;
         const LinkSet &posed = worker_.robot().pose(sample_at(s), base_);
         Measure m;
-        measure_obstacles(posed, remaining, m);
+        measure_obstacles(posed, remaining, first, m);
         if (settings_.self_collision && !m.contact) measure_self(posed, remaining, m);
         return m;
     }
@@ -50,15 +50,23 @@ private:
         return scratch_.sample.data();
     }
 
-    void measure_obstacles(const LinkSet &posed, double remaining, Measure &m) {
+    void measure_obstacles(const LinkSet &posed, double remaining, bool first, Measure &m) {
         const SweepBounds &bounds = scratch_.bounds;
         DistanceSettings d = settings_.distance;
         d.cutoff = cutoff_for(bounds.largest_rate(), remaining);
+        std::vector<double> &cutoffs = scratch_.link_cutoffs;
+        cutoffs.resize(posed.link_count());
+        // A link that does not move is apart for the whole motion once it
+        // is apart at the start: it is searched there alone.
+        for (uint32_t link = 0; link < cutoffs.size(); ++link)
+            cutoffs[link] = bounds.rate(link) > 0.0 || first ? cutoff_for(bounds.rate(link), remaining) : -1.0;
+        d.link_cutoffs = &cutoffs;
         QueryContext &context = worker_.context();
         context.distance(tree_, posed, d, true);
         const std::vector<double> &per_link = context.link_distances();
         for (uint32_t link = 0; link < per_link.size(); ++link) {
-            const double distance = std::min(per_link[link], d.cutoff);
+            if (cutoffs[link] < 0.0) continue;  // not searched
+            const double distance = std::min(per_link[link], cutoffs[link]);
             if (distance <= kCertifiedContact) {
                 m.contact = true;
                 return;

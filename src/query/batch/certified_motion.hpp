@@ -46,6 +46,7 @@ struct CertifiedSettings {
 // What a certified check reuses motion after motion.
 struct CertifiedScratch {
     std::vector<double> sample, positions_start, positions_goal;
+    std::vector<double> link_cutoffs;  // per link: how far it can still travel
     SweepBounds bounds;
 };
 
