@@ -76,10 +76,13 @@ private:
         }
     }
 
+    // After the obstacles: the pairs need only be searched as far as they
+    // can travel in the step the obstacles allow (self-distance is the
+    // costly query for a robot of many meshes).
     void measure_self(const LinkSet &posed, double remaining, Measure &m) {
         const double rate = scratch_.bounds.self_rate();
         SelfDistanceSettings self;
-        self.cutoff = cutoff_for(rate, remaining);
+        self.cutoff = cutoff_for(rate, std::min(remaining, m.step));
         const SelfDistanceOutcome nearest = worker_.context().self_distance(posed, self);
         const double distance = nearest.found ? std::min(nearest.distance, self.cutoff) : self.cutoff;
         if (distance <= kCertifiedContact) m.contact = true;
