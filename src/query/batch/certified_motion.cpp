@@ -39,7 +39,7 @@ public:
         const LinkSet &posed = worker_.robot().pose(sample_at(s), base_);
         Measure m;
         measure_obstacles(posed, remaining, first, m);
-        if (settings_.self_collision && !m.contact) measure_self(posed, remaining, m);
+        if (settings_.self_collision && !m.contact) measure_self(posed, remaining, first, m);
         return m;
     }
 
@@ -79,9 +79,23 @@ private:
     // After the obstacles: the pairs need only be searched as far as they
     // can travel in the step the obstacles allow (self-distance is the
     // costly query for a robot of many meshes).
-    void measure_self(const LinkSet &posed, double remaining, Measure &m) {
+    // Pairs of links that do not move keep their distance: the start's
+    // yes/no test settles them, and the distances skip them.
+    void measure_self(const LinkSet &posed, double remaining, bool first, Measure &m) {
         const double rate = scratch_.bounds.self_rate();
+        std::vector<uint8_t> &moving = scratch_.moving_links;
+        if (first) {
+            SelfCollisionSettings yes_no;
+            yes_no.max_contacts = 0;
+            if (worker_.context().self_collide(posed, yes_no).collided) {
+                m.contact = true;
+                return;
+            }
+            moving.resize(posed.link_count());
+            for (uint32_t link = 0; link < moving.size(); ++link) moving[link] = scratch_.bounds.rate(link) > 0.0;
+        }
         SelfDistanceSettings self;
+        self.moving_links = &moving;
         self.cutoff = cutoff_for(rate, std::min(remaining, m.step));
         const SelfDistanceOutcome nearest = worker_.context().self_distance(posed, self);
         const double distance = nearest.found ? std::min(nearest.distance, self.cutoff) : self.cutoff;

@@ -47,6 +47,7 @@ struct CertifiedSettings {
 struct CertifiedScratch {
     std::vector<double> sample, positions_start, positions_goal;
     std::vector<double> link_cutoffs;  // per link: how far it can still travel
+    std::vector<uint8_t> moving_links; // per link: FK moves it along the motion
     SweepBounds bounds;
 };
 
