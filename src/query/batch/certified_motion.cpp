@@ -18,6 +18,9 @@ double travel_allowed(double distance) { return distance * (1.0 - 1e-6) - 2e-9; 
 // How far distances are searched when the motion has `remaining` of its
 // parameter left: a little beyond what a link can still travel (a link
 // that far away is free for the rest), and never below a contact.
+// The first search reaches what the links travel in this much of the motion.
+constexpr double kFirstReach = 0.125;
+
 double cutoff_for(double rate, double remaining) { return rate * remaining * (1.0 + 1e-5) + 2.0 * kCertifiedContact; }
 
 struct Measure {
@@ -32,8 +35,8 @@ public:
         : worker_(worker), scratch_(scratch), tree_(tree), start_(start), goal_(goal), base_(base),
           settings_(settings) {}
 
-    // The configuration at `s`, measured as far as its links can still
-    // travel in the `remaining` part of the motion (0: a contact test).
+    // The configuration at `s`, measured as far as its links travel in
+    // the `remaining` part of the motion (0: a contact test).
     Measure measure(double s, double remaining, CertifiedAnswer &answer) {
         const bool first = answer.measured++ == 0;
         const LinkSet &posed = worker_.robot().pose(sample_at(s), base_);
@@ -127,9 +130,15 @@ CertifiedAnswer check_certified(BatchWorker &worker, CertifiedScratch &scratch, 
                            settings.self_collision);
     Advancer advancer(worker, scratch, tree, start, goal, base, settings);
     CertifiedAnswer answer;
-    double s = 0.0, tested_until = 0.0;
+    // Distances are searched only as far as the links travel in `reach`
+    // of the parameter: a far search of a mesh link costs much, and near
+    // obstacles the step is short anyway.  It doubles after a step that
+    // took all of it and follows the step otherwise.
+    double s = 0.0, tested_until = 0.0, reach = kFirstReach;
     for (;;) {
-        const Measure here = advancer.measure(s, 1.0 - s, answer);
+        const double searched = std::min(1.0 - s, reach);
+        const Measure here = advancer.measure(s, searched, answer);
+        reach = here.step >= searched ? 2.0 * reach : std::max(2.0 * here.step, settings.tolerance);
         if (here.contact) {
             answer.fraction = s;
             return answer;
