@@ -172,8 +172,8 @@ OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_oc
  * resolution does not apply in this mode, and compute_cost is an invalid
  * argument with it.  steps gets the advancement steps taken,
  * configurations_checked the configurations measured.  A check costs
- * few distance queries for a motion far from every obstacle (a link far
- * from everything takes the motion in one step) and more the closer the
+ * few distance queries for a motion far from every obstacle (the steps
+ * double while nothing is near: four take all of it) and more the closer the
  * motion passes to one: near a contact the steps shrink with the
  * distance until they are shorter than tolerance.  A motion that needs
  * more than 1e6 steps (one that passes within a hair of an obstacle over

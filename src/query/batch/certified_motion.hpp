@@ -4,9 +4,10 @@
 // least distance of the enabled pairs); no link can reach an obstacle
 // before it has moved d, and it moves at most rate(link) per unit of s
 // (sweep_bounds.hpp), so the motion is free up to the least
-// s + d / rate, where the check measures again.  A link far from every
-// obstacle takes the rest of the motion in one step: distances are
-// searched only as far as a link can still move (the cutoff).  Near a
+// s + d / rate, where the check measures again.  Distances are searched
+// only as far as each link moves in the next stretch of the motion (the
+// cutoff stands in for a distance beyond it), a stretch that doubles
+// while the steps take all of it.  Near a
 // contact the steps shrink; once shorter than the tolerance, the
 // configuration a tolerance ahead is tested, and a contact there ends the
 // check with the first contact bracketed.  docs/geometry.md has the
