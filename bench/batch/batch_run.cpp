@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "certified_rows.hpp"
 #include "pipelines.hpp"
 #include "self_rows.hpp"
 #include "sphere_rows.hpp"
@@ -14,6 +15,8 @@ namespace {
 
 constexpr uint64_t kSeed = 0xBA7C4u;
 constexpr size_t kMotions = 2000;
+// Certified and 1/32-sampled motions per robot, map and thread count.
+constexpr size_t kCertifiedMotions = 300;
 // Self-distance calls timed per robot (each costs far more than a check).
 constexpr size_t kSelfDistanceConfigurations = 500;
 // Self-collision in the OctoProx pipelines (FCL always checks it).
@@ -41,6 +44,31 @@ Row motion_row(const Robot &robot, const Scene &scene, const char *pipeline, con
                 {"motions_per_second", t.motions_per_second},
                 {"configurations_per_motion", t.configurations_per_motion},
                 {"resolution_rad", kMotionResolution}, {"self_collision", kSelfCollision ? 1.0 : 0.0}}};
+}
+
+// "motion certified" and "motion sampled 1/32" for `threads`; false when
+// a sampled check found a collision the certified one calls free.
+bool certified_rows(const Workload &work, const std::vector<double> &goals, size_t count, uint32_t threads,
+                    std::vector<Row> &rows) {
+    const CertifiedTiming t = time_certified_motions(work, goals, count, threads);
+    const double thread_count = double(threads);
+    rows.push_back(Row{work.robot.name, work.scene.name, "motion certified", t.certified_us / t.certified_measured,
+                       {{"us_per_motion", t.certified_us}, {"threads", thread_count}, {"motions", double(t.motions)},
+                        {"collided", double(t.certified_collided)},
+                        {"configurations_per_motion", t.certified_measured}, {"missed_by_sampling", 0.0},
+                        {"self_collision", kSelfCollision ? 1.0 : 0.0}}});
+    rows.push_back(Row{work.robot.name, work.scene.name, "motion sampled 1/32", t.sampled_us / t.sampled_checked,
+                       {{"us_per_motion", t.sampled_us}, {"threads", thread_count}, {"motions", double(t.motions)},
+                        {"collided", double(t.sampled_collided)}, {"configurations_per_motion", t.sampled_checked},
+                        {"missed_by_sampling", double(t.missed_32)}, {"missed_by_sampling_1_16", double(t.missed_16)},
+                        {"self_collision", kSelfCollision ? 1.0 : 0.0}}});
+    std::printf("  %s, %s, %u thread(s): certified %.1f us a motion, sampled at 1/32 %.1f us (x%.2f); of %zu "
+                "motions sampling calls free %zu (1/32) and %zu (1/16) the certified check finds colliding%s\n",
+                work.robot.name.c_str(), work.scene.name.c_str(), threads, t.certified_us, t.sampled_us,
+                t.certified_us / t.sampled_us, t.motions, t.missed_32, t.missed_16,
+                t.unsound == 0 ? "" : "; MISMATCH: a sampled collision the certified check calls free");
+    std::fflush(stdout);
+    return t.unsound == 0;
 }
 
 bool check_agreement(const Robot &robot, const Scene &scene, const Timing &single, const Timing &one,
@@ -88,8 +116,11 @@ bool run_robot(Robot &robot, const Scene &scene, const opx_pose &base, const Run
     const size_t motions = std::min(set.count, options.quick ? size_t(20) : kMotions);
     rows.push_back(motion_row(robot, scene, "motions batch 1 thread", time_motions(work, goals, motions, 1)));
     rows.push_back(motion_row(robot, scene, "motions batch 2 threads", time_motions(work, goals, motions, 2)));
+    const size_t certified = std::min(set.count, options.quick ? size_t(10) : kCertifiedMotions);
+    bool sound = certified_rows(work, goals, certified, 1, rows);
+    sound &= certified_rows(work, goals, certified, 2, rows);
     if (with_self_rows) self_rows(robot, set, fcl_check, options, rows);
-    return check_agreement(robot, scene, single, one, two, fcl);
+    return check_agreement(robot, scene, single, one, two, fcl) && sound;
 }
 
 void sphere_rows(Robot &arm, const Scene &scene, const RunOptions &options, std::vector<Row> &rows) {

@@ -139,6 +139,53 @@ OPX_API opx_status opx_query_check_configurations(opx_query *query, const opx_oc
 
 /* ---- Joint-space motions ---------------------------------------------- */
 
+/* How a motion is checked (opx_motion_request.check).
+ *
+ * OPX_MOTION_SAMPLED checks the configurations `resolution` apart (below);
+ * the robot is not checked between them, so an obstacle thinner than a
+ * link's travel from one sample to the next may be passed through unseen.
+ *
+ * OPX_MOTION_CERTIFIED checks the whole segment, every parameter s in
+ * [0, 1] of start + s (goal - start), by conservative advancement on exact
+ * distances (docs/geometry.md): from a configuration where each enabled
+ * link is d away from the obstacles (the octree's cells or point extents
+ * as obstacle_geometry says, unknown space as unknown_policy says, the
+ * world's enabled objects; padding included), the links cannot reach
+ * them before each has moved d, and a bound on how far a link's points
+ * move per unit of each joint (from the joint tree: distances from the
+ * joint axes to the farthest point of the link's shapes, 1 for a
+ * prismatic joint) says when that can first happen; the check advances
+ * there and measures again.  With self_collision the same holds for the
+ * enabled pairs of links, by a bound on their relative displacement.
+ *  - "free" (collided 0) means no configuration of the segment, at any
+ *    parameter, collides under the rules of opx_query_collide and
+ *    opx_query_self_collide (touching collides), rounding of the exact
+ *    distances (docs/geometry.md) accounted for.
+ *  - "collides" (collided 1) reports first_collision_fraction f: the
+ *    configuration at f collides, where in this mode a configuration also
+ *    counts as colliding when its distance to an obstacle (or between an
+ *    enabled pair) is at most 1e-8 m (OPX_MOTION_CONTACT_DISTANCE, a
+ *    hair above the 1e-9 m touch tolerance, so that a motion that grazes
+ *    an obstacle ends); and no configuration before f - tolerance
+ *    collides (the first colliding fraction lies in [f - tolerance, f];
+ *    f = 0 when the start collides).
+ * resolution does not apply in this mode, and compute_cost is an invalid
+ * argument with it.  steps gets the advancement steps taken,
+ * configurations_checked the configurations measured.  A check costs
+ * few distance queries for a motion far from every obstacle (the steps
+ * double while nothing is near: four take all of it) and more the closer the
+ * motion passes to one: near a contact the steps shrink with the
+ * distance until they are shorter than tolerance.  A motion that needs
+ * more than 1e6 steps (one that passes within a hair of an obstacle over
+ * a long stretch) is refused with OPX_ERROR_UNSUPPORTED, naming the
+ * parameter reached. */
+/** Configurations `resolution` apart (the default). */
+#define OPX_MOTION_SAMPLED 0
+/** The whole segment, by conservative advancement (above). */
+#define OPX_MOTION_CERTIFIED 1
+/** Metres: in OPX_MOTION_CERTIFIED, a configuration this close collides. */
+#define OPX_MOTION_CONTACT_DISTANCE 1e-8
+
 typedef struct opx_motion_request {
     uint32_t struct_size;
     int32_t unknown_policy;     /**< as in opx_collision_request */
@@ -171,19 +218,30 @@ typedef struct opx_motion_request {
      * applies to every moving joint, mimic joints included, in both. */
     int32_t joint_order;
     int32_t reserved1;          /**< padding; keep 0 */
+    /** How the motion is checked: OPX_MOTION_SAMPLED (default) or
+     * OPX_MOTION_CERTIFIED (see above). */
+    int32_t check;
+    int32_t reserved2;          /**< padding; keep 0 */
+    /** OPX_MOTION_CERTIFIED only: the width of the bracket of the first
+     * colliding fraction, a fraction of the motion (> 0 and <= 1; default
+     * 1e-3). */
+    double tolerance;
 } opx_motion_request;
 
 #define OPX_MOTION_REQUEST_INIT {sizeof(opx_motion_request), OPX_UNKNOWN_FREE, 0.0, 0.01, 0, 0, \
-    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, OPX_OBSTACLE_CELLS, 0, OPX_JOINTS_BY_COUNT, 0}
+    16, 1, 0.5, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, OPX_OBSTACLE_CELLS, 0, OPX_JOINTS_BY_COUNT, 0, \
+    OPX_MOTION_SAMPLED, 0, 1e-3}
 OPX_API opx_status opx_motion_request_init(opx_motion_request *request, size_t size);
 
 typedef struct opx_motion_result {
     uint32_t struct_size;
     int32_t collided;                /**< 1: some configuration of the motion collides */
     /** Where the first colliding configuration lies: i / n in [0, 1]; -1
-     * when none collides. */
+     * when none collides.  OPX_MOTION_CERTIFIED: see above. */
     double first_collision_fraction;
-    uint64_t steps;                  /**< n: the motion is checked at n + 1 configurations */
+    /** n: the motion is checked at n + 1 configurations
+     * (OPX_MOTION_CERTIFIED: the advancement steps) */
+    uint64_t steps;
     /** Configurations checked: the ends first, then ever finer midpoints,
      * none beyond the first collision found so far (all with compute_cost). */
     uint64_t configurations_checked;

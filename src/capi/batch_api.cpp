@@ -47,14 +47,38 @@ opx_collision_request as_collision_request(const opx_motion_request &r) {
     return c;
 }
 
+// The distances a certified check advances by: to the obstacles the
+// collision settings name.
+CertifiedSettings certified_settings(const opx_motion_request &r, const CollisionSettings &collision) {
+    if (!(r.tolerance > 0.0 && r.tolerance <= 1.0))
+        throw_invalid(format("request->tolerance is %g; a fraction of the motion in (0, 1] is needed", r.tolerance));
+    if (r.compute_cost != 0)
+        throw_invalid("request->compute_cost is 1; the swept cost is given by OPX_MOTION_SAMPLED checks only");
+    CertifiedSettings s;
+    s.distance.threshold_log_odds = collision.threshold_log_odds;
+    s.distance.unknown_occupied = collision.unknown_occupied;
+    s.distance.point_extents = collision.point_extents;
+    s.self_collision = r.self_collision != 0;
+    s.tolerance = r.tolerance;
+    return s;
+}
+
 MotionSettings motion_settings(const opx_motion_request &r, const SensorOctree *tree) {
     MotionSettings s;
     s.collision = settings_for_map(as_collision_request(r), tree);
+    s.self_collision = r.self_collision != 0;
+    s.threads = r.max_threads;
+    if (r.check != OPX_MOTION_SAMPLED && r.check != OPX_MOTION_CERTIFIED)
+        throw_invalid(format("request->check is %d; OPX_MOTION_SAMPLED (0) or OPX_MOTION_CERTIFIED (1) is needed",
+                             r.check));
+    s.certified = r.check == OPX_MOTION_CERTIFIED;
+    if (s.certified) {
+        s.certified_settings = certified_settings(r, s.collision);
+        return s;
+    }
     if (!(r.resolution > 0.0) || !std::isfinite(r.resolution))
         throw_invalid(format("request->resolution is %g; a finite step > 0 (rad or m) is needed", r.resolution));
     s.resolution = r.resolution;
-    s.self_collision = r.self_collision != 0;
-    s.threads = r.max_threads;
     return s;
 }
 
@@ -78,6 +102,9 @@ MotionAnswer run_motion(opx_query *query, const Obstacles &obstacles, const opx_
     query->batch.prepare(1, links->links, joints, obstacles.world);
     BatchWorker &worker = query->batch[0];
     MotionScratch scratch;
+    if (settings.certified)
+        return MotionAnswer::of(check_certified(worker, scratch.certified, obstacles.tree, joints, start, goal, base,
+                                                settings.certified_settings));
     double largest = 0.0;
     const double steps = motion_steps(worker.robot(), scratch, start, goal, settings.resolution, largest);
     require_motion_steps(steps, largest, settings.resolution, "the motion from start to goal");

@@ -3,6 +3,9 @@
 #include "base/error.hpp"
 #include "query/direct/direct_engine.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace octoprox {
 
 // The one place an engine is chosen.
@@ -40,6 +43,12 @@ DistanceAnswer QueryContext::distance(const SensorOctree *tree, const LinkSet &l
         if (o.found) answer.cell = describe_cell(*tree, o.cell, o.cell_unknown, o.cell_log_odds);
     }
     distance_world(links, settings, per_link, answer);
+    if (per_link && settings.link_cutoffs)
+        for (size_t link = 0; link < link_distances_.size(); ++link) {
+            const double cutoff = (*settings.link_cutoffs)[link];
+            link_distances_[link] = cutoff < 0.0 ? std::numeric_limits<double>::infinity()
+                                                 : std::min(link_distances_[link], cutoff);
+        }
     return answer;
 }
 

@@ -30,6 +30,10 @@ void QueryContext::distance_world(const LinkSet &links, const DistanceSettings &
     DistanceOutcome &o = answer.outcome;
     if (per_link && link_distances_.empty())
         link_distances_.assign(links.link_count(), std::numeric_limits<double>::infinity());
+    // Each link's entry bounds its search among the objects (0: none).
+    if (per_link && settings.link_cutoffs)
+        for (size_t link = 0; link < link_distances_.size(); ++link)
+            link_distances_[link] = std::min(link_distances_[link], std::max((*settings.link_cutoffs)[link], 0.0));
     const double bound = o.found && !per_link ? std::min(o.distance, settings.cutoff) : settings.cutoff;
     const WorldDistance w = world_collider_.distance(*world_, links, bound, settings.signed_distance,
                                                      per_link ? &link_distances_ : nullptr);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace octoprox {
 
@@ -17,6 +18,12 @@ struct DistanceSettings {
     double cutoff = std::numeric_limits<double>::infinity();  // farther: "at least cutoff"
     bool signed_distance = false;  // penetration depth as a negative distance
     bool point_extents = false;    // obstacle leaves are their point extents (octree_cell.hpp)
+    // Per-link queries only: each link's own cutoff (one per link; the
+    // smaller of it and `cutoff` applies), so a link that can only move a
+    // little is searched only that far.  Its per-link answer is then at
+    // most its cutoff ("at least" when nothing is nearer).  A negative
+    // cutoff skips the link (its answer stays infinity).
+    const std::vector<double> *link_cutoffs = nullptr;
 };
 
 // The closest pair found: a shape of a link and an obstacle cell.

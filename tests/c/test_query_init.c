@@ -154,6 +154,8 @@ static void default_values_are_documented_ones(void **state) {
     assert_int_equal(m.max_cost_boxes, 16);
     assert_int_equal(m.self_collision + m.compute_cost, 0);
     assert_int_equal(m.joint_order, OPX_JOINTS_BY_COUNT);
+    assert_int_equal(m.check, OPX_MOTION_SAMPLED);
+    assert_true(m.tolerance == 1e-3);
 
     opx_motion_result mr;
     assert_ok(opx_motion_result_init(&mr, sizeof mr));
@@ -168,7 +170,9 @@ static void batch_struct_layouts_are_fixed(void **state) {
     assert_int_equal(offsetof(opx_batch_request, max_threads), 32);
     assert_int_equal(offsetof(opx_batch_request, obstacle_geometry), 36);
     assert_int_equal(offsetof(opx_batch_request, joint_order), 40);
-    assert_int_equal(sizeof(opx_motion_request), 112);
+    assert_int_equal(sizeof(opx_motion_request), 128);
+    assert_int_equal(offsetof(opx_motion_request, check), 112);
+    assert_int_equal(offsetof(opx_motion_request, tolerance), 120);
     assert_int_equal(offsetof(opx_motion_request, obstacle_geometry), 96);
     assert_int_equal(offsetof(opx_motion_request, joint_order), 104);
     assert_int_equal(offsetof(opx_motion_request, resolution), 16);

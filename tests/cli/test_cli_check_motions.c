@@ -5,6 +5,7 @@
  * and reports where the motion first collides, as opx_query_check_motion
  * does at the same resolution, whatever --threads; a path that stops short
  * of the wall is free; bad --resolution and --threads are usage errors.
+ * With --certified the same, the fraction being the certified check's.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -21,7 +22,7 @@
 #include <cmocka.h>
 
 /* The library's own answer for the motion slide a -> b. */
-static opx_motion_result library_motion(double a, double b, double resolution) {
+static opx_motion_result library_motion(double a, double b, double resolution, int32_t check) {
     opx_octree *map = scene_load_map();
     opx_linkset *robot = scene_load_robot(0.0);
     opx_query *query = NULL;
@@ -32,6 +33,7 @@ static opx_motion_result library_motion(double a, double b, double resolution) {
     assert_int_equal(opx_linkset_get_joint_count(robot, &joints), OPX_OK);
     assert_int_equal(joints, 1);
     request.resolution = resolution;
+    request.check = check;
     assert_int_equal(opx_query_create(NULL, &query), OPX_OK);
     assert_int_equal(opx_query_check_motion(query, map, robot, start, goal, 1, NULL, &request, &result), OPX_OK);
     opx_query_destroy(query);
@@ -43,7 +45,7 @@ static opx_motion_result library_motion(double a, double b, double resolution) {
 static void a_motion_through_the_wall_collides(void **state) {
     static cli_result r;
     char csv[512];
-    const opx_motion_result expected = library_motion(0.0, 3.0, 0.02);
+    const opx_motion_result expected = library_motion(0.0, 3.0, 0.02, OPX_MOTION_SAMPLED);
     (void)state;
     snprintf(csv, sizeof csv, "%s", write_text("through.csv", "slide\n0\n3\n")); /* write_text's buffer is reused */
     assert_int_equal(expected.collided, 1);
@@ -60,6 +62,27 @@ static void a_motion_through_the_wall_collides(void **state) {
     run_cli(&r, "check '%s' --urdf '%s' --path '%s'", scene_map(), scene_urdf(), csv);
     assert_int_equal(r.code, 1);
     assert_non_null(strstr(r.out, "first collision between waypoints 0 and 1"));
+}
+
+static void certified_motions(void **state) {
+    static cli_result r;
+    char csv[512];
+    const opx_motion_result expected = library_motion(0.0, 3.0, 0.02, OPX_MOTION_CERTIFIED);
+    (void)state;
+    snprintf(csv, sizeof csv, "%s", write_text("through_certified.csv", "slide\n0\n3\n"));
+    assert_int_equal(expected.collided, 1);
+    run_cli(&r, "check '%s' --urdf '%s' --path '%s' --certified --threads 2 --json", scene_map(), scene_urdf(), csv);
+    assert_int_equal(r.code, 1);
+    assert_non_null(strstr(r.out, "\"certified\": true"));
+    assert_int_equal((long long)json_field_in(r.out, "motions", "first_colliding"), 0);
+    assert_true(json_field_in(r.out, "motions", "first_collision_fraction") == expected.first_collision_fraction);
+    run_cli(&r, "check '%s' --urdf '%s' --path '%s' --certified", scene_map(), scene_urdf(),
+            write_text("short_certified.csv", "slide\n0\n1.8\n0.4\n"));
+    assert_int_equal(r.code, 0);
+    assert_non_null(strstr(r.out, "certified"));
+    run_cli(&r, "check '%s' --urdf '%s' --certified", scene_map(), scene_urdf());
+    assert_int_equal(r.code, 2);
+    assert_non_null(strstr(r.err, "--certified"));
 }
 
 static void a_path_short_of_the_wall_is_free(void **state) {
@@ -89,6 +112,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_motion_through_the_wall_collides),
         cmocka_unit_test(a_path_short_of_the_wall_is_free),
+        cmocka_unit_test(certified_motions),
         cmocka_unit_test(bad_options_are_usage_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

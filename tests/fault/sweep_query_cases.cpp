@@ -266,6 +266,39 @@ private:
     double gradient_[kRows * kSphereArmJoints] = {};
 };
 
+// Certified motions of the sphere arm on 2 threads against the
+// attempt's own map: distances per link, advancement, the bracket.
+class CertifiedMotionAttempt : public OwnMapAttempt {
+public:
+    CertifiedMotionAttempt() {
+        arm_ = sphere_arm();
+        rows_ = sphere_arm_rows(2 * kMotions, 17);
+    }
+    ~CertifiedMotionAttempt() override { opx_linkset_destroy(arm_); }
+    opx_status call() override {
+        opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+        request.check = OPX_MOTION_CERTIFIED;
+        request.max_threads = 2;
+        const size_t stride = 2 * kSphereArmJoints * sizeof(double);
+        return opx_query_check_motions(query_, tree_, arm_, rows_.data(), rows_.data() + kSphereArmJoints, kMotions,
+                                       kSphereArmJoints, stride, &kSphereArmBase, 1, 0, &request, collided_,
+                                       fractions_, kMotions);
+    }
+    void record_answer(Record &record) override {
+        for (size_t i = 0; i < kMotions; ++i) {
+            record.add("motion collided", uint32_t(collided_[i]));
+            record.add("first collision fraction", fractions_[i]);
+        }
+    }
+
+private:
+    static constexpr size_t kMotions = 3;
+    opx_linkset *arm_ = nullptr;
+    std::vector<double> rows_;
+    uint8_t collided_[kMotions] = {};
+    double fractions_[kMotions] = {};
+};
+
 std::string case_name(const std::string &what, int32_t engine, Stage stage) {
     return what + (engine == OPX_ENGINE_DIRECT ? " direct " : " amortized ") + stage_name(stage);
 }
@@ -298,6 +331,8 @@ std::vector<SweepCase> query_cases() {
                      [] { return std::unique_ptr<Attempt>(new TrajectoryCostAttempt()); }, {}});
     cases.push_back({"opx_query_check_configurations of a sphere arm on a new map",
                      [] { return std::unique_ptr<Attempt>(new SphereBatchAttempt()); }, {}});
+    cases.push_back({"opx_query_check_motions certified, a sphere arm on a new map",
+                     [] { return std::unique_ptr<Attempt>(new CertifiedMotionAttempt()); }, {}});
     return cases;
 }
 

@@ -18,6 +18,7 @@
 #include "fault_answers.hpp"
 #include "fault_scene.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -220,6 +221,28 @@ void sphere_batch_queries(Record &record, const SharedScene &scene) {
     opx_query_destroy(query);
 }
 
+// Certified motions of the arm of spheres between its rows, on two
+// workers, then on one: every thread reads the shared map and arm.
+void certified_motion_queries(Record &record, const SharedScene &scene) {
+    opx_query *query = new_query(OPX_ENGINE_DIRECT);
+    const size_t count = std::min<size_t>(4, scene.sphere_rows.size() / kSphereArmJoints / 2);
+    std::vector<uint8_t> collided(count);
+    std::vector<double> fractions(count);
+    for (uint32_t workers : {2u, 1u}) {
+        opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+        request.check = OPX_MOTION_CERTIFIED;
+        request.max_threads = workers;
+        const double *rows = scene.sphere_rows.data();
+        record.add("check_motions certified",
+                   opx_query_check_motions(query, scene.tree, scene.sphere_arm, rows, rows + kSphereArmJoints, count,
+                                           kSphereArmJoints, 2 * kSphereArmJoints * sizeof(double), &kSphereArmBase,
+                                           1, 0, &request, collided.data(), fractions.data(), count));
+        record.add_bytes("motions collided", collided.data(), count);
+        record.add("first collision fractions", fractions.data(), count);
+    }
+    opx_query_destroy(query);
+}
+
 // Frames self-filtered against the shared arms (whose meshes the first
 // filter places) into maps of this thread's own, on one and two threads.
 void filtered_inserts(Record &record, const SharedScene &scene) {
@@ -249,6 +272,7 @@ Record every_answer(const SharedScene &scene) {
     filtered_inserts(record, scene);
     sphere_queries(record, scene);
     sphere_batch_queries(record, scene);
+    certified_motion_queries(record, scene);
     octree_queries(record, scene, OPX_ENGINE_DIRECT);
     octree_queries(record, scene, OPX_ENGINE_AMORTIZED);
     box_queries(record, scene);

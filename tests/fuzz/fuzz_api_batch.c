@@ -4,7 +4,11 @@
  * on 1 to 3 threads.  Each accepted answer must equal the single call's:
  * forward kinematics on a clone of the link set, then opx_query_collide
  * with the same settings.  The trajectory cost of the same rows is checked
- * for a finite answer that a second query repeats.  See fuzz_api.h. */
+ * for a finite answer that a second query repeats.  A record with bytes
+ * left after the batch's also checks the motion from its first row to its
+ * last, sampled or certified: a motion called free has free ends (the
+ * single calls), and a certified "free" is never a sampled "collides".
+ * See fuzz_api.h. */
 #include "fuzz_api.h"
 #include "fuzz_api_requests.h"
 
@@ -35,6 +39,43 @@ static int single_collides(opx_query *query, const opx_octree *tree, const opx_l
     return collided;
 }
 
+/* The motion from row 0 to row count - 1 of `rows` (small joint values
+ * only: a long motion near obstacles may take the certified check
+ * many steps). */
+static void check_motion_of_rows(fuzz_api *api, opx_query *query, const opx_octree *tree, const opx_linkset *links,
+                                 const double *rows, size_t count, size_t joints, const opx_pose *base) {
+    fuzz_input *in = &api->in;
+    const uint8_t kind = take_u8(in);
+    if (kind == 0 || count == 0 || joints == 0) return; /* records without the bytes: no motion */
+    for (size_t i = 0; i < count * joints; ++i)
+        if (!(rows[i] > -10.0 && rows[i] < 10.0)) return;
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.check = kind < 200 ? OPX_MOTION_CERTIFIED : kind < 250 ? OPX_MOTION_SAMPLED : (int32_t)take_u32(in);
+    const uint8_t tolerance = take_u8(in);
+    request.tolerance = tolerance < 240 ? (tolerance + 1) / 256.0 : take_double(in);
+    request.resolution = 0.05;
+    request.self_collision = take_u8(in) >= 192;
+    request.max_threads = 1 + take_below(in, 3);
+    const uint8_t geometry = take_u8(in);
+    request.obstacle_geometry = geometry < 200 ? OPX_OBSTACLE_CELLS : OPX_OBSTACLE_POINT_EXTENTS;
+    const double *start = rows, *goal = rows + (count - 1) * joints;
+    opx_motion_result result = OPX_MOTION_RESULT_INIT;
+    const opx_status status =
+        FUZZ_CALL(opx_query_check_motion, query, tree, links, start, goal, joints, base, &request, &result);
+    if (status != OPX_OK) return;
+    FUZZ_REQUIRE(result.collided == (result.first_collision_fraction >= 0.0));
+    FUZZ_REQUIRE(result.first_collision_fraction <= 1.0);
+    if (result.collided || tree == NULL || request.self_collision || links == NULL) return;
+    const opx_batch_request yes_no = {sizeof yes_no, OPX_UNKNOWN_FREE, 0.0, 0, 0, 0.0, 1,
+                                      request.obstacle_geometry, OPX_JOINTS_BY_COUNT, 0};
+    FUZZ_REQUIRE(single_collides(api->reference[0], tree, links, start, joints, base, &yes_no) != 1);
+    FUZZ_REQUIRE(single_collides(api->reference[0], tree, links, goal, joints, base, &yes_no) != 1);
+    if (request.check != OPX_MOTION_CERTIFIED) return;
+    request.check = OPX_MOTION_SAMPLED;
+    if (FUZZ_CALL(opx_query_check_motion, query, tree, links, start, goal, joints, base, &request, &result) == OPX_OK)
+        FUZZ_REQUIRE(!result.collided);
+}
+
 void op_query_batch(fuzz_api *api) {
     fuzz_input *in = &api->in;
     opx_query *query = take_query(api);
@@ -55,6 +96,7 @@ void op_query_batch(fuzz_api *api) {
     uint8_t collided[MAX_ROWS];
     const opx_status status = FUZZ_CALL(opx_query_check_configurations, query, tree, links, rows, count, joints, 0,
                                         &base, 1, 0, &request, collided, NULL, count);
+    check_motion_of_rows(api, query, tree, links, rows, count, joints, &base);
     /* An older request's size leaves the later fields at their defaults. */
     if (status != OPX_OK || tree == NULL || request.struct_size != sizeof request) return;
     for (size_t i = 0; i < count; ++i) {

@@ -139,8 +139,9 @@ static void emit_scene(program *p, unsigned char engine) {
 }
 
 /* A batch of four rows of the URDF robot in slot 0 (7 joints) against
- * tree 0 on query 0, on two threads, its root near an occupied leaf: the
- * arguments op_query_batch reads, in its order. */
+ * tree 0 on query 0, on two threads, its root near an occupied leaf, then
+ * the certified motion from the first row to the last: the arguments
+ * op_query_batch reads, in its order. */
 static void emit_batch(program *p) {
     unsigned char args[255];
     size_t n = 0;
@@ -152,6 +153,8 @@ static void emit_batch(program *p) {
     const unsigned char base[] = {0, 0, 0, 0, 0, 0, 0, 64, /* pose: origin, identity */
                                   0, next_random(p), next_random(p), next_random(p), next_random(p)}; /* near a leaf */
     for (size_t i = 0; i < sizeof base; ++i) args[n++] = base[i];
+    const unsigned char motion[] = {1, 3, 0, 0, 0}; /* certified, tolerance 1/64, no self, 1 thread, cells */
+    for (size_t i = 0; i < sizeof motion; ++i) args[n++] = motion[i];
     emit(p, OP_QUERY_BATCH, args, n);
 }
 

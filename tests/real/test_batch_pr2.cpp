@@ -3,7 +3,8 @@
 // the single calls (FK on the link set, then opx_query_collide /
 // opx_query_distance, and _self_collide / _self_distance) at
 // random configurations within the URDF limits, for 1, 2 and 3 threads,
-// against scattered occupied cells at 2 cm around the robot.
+// against scattered occupied cells at 2 cm around the robot; certified
+// motions against a dense walk.
 #include "real_support.hpp"
 
 #include <algorithm>
@@ -207,6 +208,59 @@ void test_motions_equal_single_motion_calls(void **) {
     opx_linkset_destroy(robot);
 }
 
+// Certified motions of the PR2 with self-collision from free random
+// configurations: a motion called free has no colliding configuration in
+// a walk of 10,001 (1e-4 of it); one called colliding reports a
+// configuration within the contact distance and none of the walk's before
+// its fraction less the tolerance collides; 2 threads agree.
+void test_certified_motions_against_a_walk(void **) {
+    opx_linkset *robot = load_pr2();
+    opx_octree *tree = scatter_map();
+    const size_t joints = joint_count(robot), motions = 4;
+    opx_query *query = nullptr, *single_query = nullptr;
+    real::check_ok(opx_query_create(nullptr, &query), "opx_query_create");
+    real::check_ok(opx_query_create(nullptr, &single_query), "opx_query_create");
+    const Single single{single_query, tree, robot};
+    auto collides = [&](const double *q) { return single.collides(q) || single.self_collides(); };
+    std::vector<double> starts, goals;
+    std::mt19937_64 rng(5);
+    for (uint32_t seed = 100; starts.size() < motions * joints; ++seed) {
+        const std::vector<double> q = random_rows(robot, 1, seed);
+        if (collides(q.data())) continue;
+        starts.insert(starts.end(), q.begin(), q.end());
+        for (double v : q) goals.push_back(v + std::uniform_real_distribution<double>(-0.3, 0.3)(rng));
+    }
+    opx_motion_request request = OPX_MOTION_REQUEST_INIT;
+    request.check = OPX_MOTION_CERTIFIED;
+    request.self_collision = 1;
+    request.max_threads = 2;
+    std::vector<uint8_t> collided(motions);
+    std::vector<double> fractions(motions), q(joints);
+    real::check_ok(opx_query_check_motions(query, tree, robot, starts.data(), goals.data(), motions, joints, 0,
+                                           nullptr, 0, 0, &request, collided.data(), fractions.data(), motions),
+                   "opx_query_check_motions");
+    for (size_t m = 0; m < motions; ++m) {
+        const double *a = &starts[m * joints], *b = &goals[m * joints];
+        opx_motion_result result = OPX_MOTION_RESULT_INIT;
+        real::check_ok(opx_query_check_motion(query, tree, robot, a, b, joints, nullptr, &request, &result),
+                       "opx_query_check_motion");
+        assert_true(result.first_collision_fraction == fractions[m]);
+        assert_int_equal(result.collided, collided[m]);
+        const double end = collided[m] ? fractions[m] - request.tolerance : 2.0;
+        for (int i = 0; i <= 10000 && i / 1e4 < end; ++i) {
+            for (size_t j = 0; j < joints; ++j) q[j] = a[j] + (i / 1e4) * (b[j] - a[j]);
+            assert_false(collides(q.data()));
+        }
+        if (!collided[m]) continue;
+        for (size_t j = 0; j < joints; ++j) q[j] = a[j] + fractions[m] * (b[j] - a[j]);
+        assert_true(std::min(single.distance(q.data()), single.self_distance()) <= OPX_MOTION_CONTACT_DISTANCE);
+    }
+    opx_query_destroy(single_query);
+    opx_query_destroy(query);
+    opx_octree_destroy(tree);
+    opx_linkset_destroy(robot);
+}
+
 }  // namespace
 
 int main() {
@@ -216,6 +270,7 @@ int main() {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_configurations_equal_single_calls),
         cmocka_unit_test(test_motions_equal_single_motion_calls),
+        cmocka_unit_test(test_certified_motions_against_a_walk),
     };
     return cmocka_run_group_tests_name("real_batch_pr2", tests, nullptr, nullptr);
 }

@@ -42,6 +42,7 @@ static int fill_rows(const check_context *c, const opx_linkset *links, const pat
  * is a usage error (exit 2), found before any query runs. */
 static int check_resolution(const check_context *c, const path_csv *csv, const path_rows *rows) {
     size_t m, j;
+    if (c->certified) return -1; /* the resolution does not apply */
     for (m = 0; m + 1 < csv->waypoint_count; ++m) {
         const double *start = rows->values + m * rows->joint_count, *goal = start + rows->joint_count;
         double largest = 0.0;
@@ -102,6 +103,7 @@ static int check_motions(const check_context *c, const opx_linkset *links, const
     request.resolution = c->resolution;
     request.max_threads = c->threads;
     request.self_collision = c->want_self;
+    request.check = c->certified ? OPX_MOTION_CERTIFIED : OPX_MOTION_SAMPLED;
     status = motions == 0 ? OPX_OK
                           : opx_query_check_motions(c->query, c->map, links, rows->values,
                                                     rows->values + rows->joint_count, motions, rows->joint_count, 0,

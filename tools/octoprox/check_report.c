@@ -248,15 +248,20 @@ void check_print_path(const check_context *c, size_t waypoints, const opx_path_r
 
 void check_print_motions(const check_context *c, const check_motions_report *m) {
     if (!c->json) {
-        printf("motions    %zu between the waypoints, checked every %g rad (or m) of joint motion\n", m->count,
-               c->resolution);
+        if (c->certified)
+            printf("motions    %zu between the waypoints, every configuration checked (certified)\n", m->count);
+        else
+            printf("motions    %zu between the waypoints, checked every %g rad (or m) of joint motion\n", m->count,
+                   c->resolution);
         if (m->first_colliding >= 0)
             printf("first collision between waypoints %lld and %lld, at %.6f of the way\n",
                    (long long)m->first_colliding, (long long)m->first_colliding + 1, m->first_fraction);
         return;
     }
-    printf(",\n  \"motions\": {\"count\": %zu, \"resolution\": ", m->count);
-    json_number(stdout, c->resolution);
+    printf(",\n  \"motions\": {\"count\": %zu, \"certified\": %s, \"resolution\": ", m->count,
+           c->certified ? "true" : "false");
+    if (c->certified) fputs("null", stdout);
+    else json_number(stdout, c->resolution);
     printf(", \"first_colliding\": %lld, \"first_collision_fraction\": ", (long long)m->first_colliding);
     json_number(stdout, m->first_fraction);
     fputs("}", stdout);

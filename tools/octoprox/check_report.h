@@ -20,6 +20,7 @@ typedef struct check_context {
     int want_distance, want_cost, want_self, json;
     double resolution; /* --path: joint step between checked configurations (rad or m) */
     uint32_t threads;  /* --path: threads of the batch calls (0: every core) */
+    int certified;     /* --path --certified: every configuration of each motion (OPX_MOTION_CERTIFIED) */
 } check_context;
 
 /* The motions between the waypoints of a path (--path). */

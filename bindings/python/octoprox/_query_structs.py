@@ -241,14 +241,17 @@ class MotionRequest(Struct):
     step between checked configurations, rad or m, 0.01), self_collision,
     compute_cost (check_motion only), max_cost_boxes, max_threads
     (check_motions), unknown_probability, region_min/max,
-    obstacle_geometry, joint_order (JointOrder: what start and goal hold)."""
+    obstacle_geometry, joint_order (JointOrder: what start and goal hold),
+    check (MotionCheck: SAMPLED or CERTIFIED, the whole segment), tolerance
+    (CERTIFIED: the bracket of the first colliding fraction, 1e-3)."""
     _fields_ = [("struct_size", c_uint32), ("unknown_policy", c_int32),
                 ("occupancy_threshold", c_double), ("resolution", c_double),
                 ("self_collision", c_int32), ("compute_cost", c_int32),
                 ("max_cost_boxes", c_uint32), ("max_threads", c_uint32),
                 ("unknown_probability", c_double), ("region_min", D3), ("region_max", D3),
                 ("obstacle_geometry", c_int32), ("reserved0", c_int32),
-                ("joint_order", c_int32), ("reserved1", c_int32)]
+                ("joint_order", c_int32), ("reserved1", c_int32),
+                ("check", c_int32), ("reserved2", c_int32), ("tolerance", c_double)]
 
 
 class MotionResult(Struct):

@@ -45,9 +45,9 @@ _CONFIGURATIONS = ("max_threads", "self_collision", "compute_distance", "unknown
                    "occupancy_threshold", "distance_cutoff", "obstacle_geometry", "joint_order")
 _MOTION = ("resolution", "self_collision", "unknown_policy", "occupancy_threshold",
            "compute_cost", "max_cost_boxes", "unknown_probability", "region_min", "region_max",
-           "obstacle_geometry", "joint_order")
+           "obstacle_geometry", "joint_order", "check", "tolerance")
 _MOTIONS = ("resolution", "max_threads", "self_collision", "unknown_policy",
-            "occupancy_threshold", "obstacle_geometry", "joint_order")
+            "occupancy_threshold", "obstacle_geometry", "joint_order", "check", "tolerance")
 _SPHERES = ("unknown_policy", "occupancy_threshold", "obstacle_geometry")
 _TRAJECTORY = ("activation", "unknown_policy", "occupancy_threshold", "obstacle_geometry",
                "joint_order")
@@ -300,7 +300,8 @@ class BatchQueries:
                      region_min: Vector3 = _ZERO3, region_max: Vector3 = _ZERO3,
                      obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
                      joint_order: JointOrderLike = JointOrder.BY_COUNT,
-                     world: Optional[World] = None
+                     world: Optional[World] = None, certified: bool = False,
+                     tolerance: float = 1e-3
                      ) -> MotionResult:
         """Checks the straight joint-space motion from start to goal (joint
         vectors of the active joints or of every joint in model order, as
@@ -317,6 +318,14 @@ class BatchQueries:
           needs an octree.
         world: a World whose enabled objects are checked too, as
           check_configurations checks them (tree may then be None).
+        certified: check every configuration of the segment, not samples
+          (conservative advancement on exact distances; resolution does
+          not apply, compute_cost is refused): collided False means no
+          configuration of the motion collides; when True,
+          first_collision_fraction f is a configuration within 1e-8 m of
+          an obstacle and none before f - tolerance collides.
+        tolerance: with certified, that bracket (a fraction of the
+          motion, in (0, 1]).
         Other keywords as Query.collide.
 
         Returns a MotionResult: collided (bool), first_collision_fraction
@@ -332,7 +341,7 @@ class BatchQueries:
         request = self._motion_requests.lookup(
             (resolution, self_collision, unknown_policy, occupancy_threshold, compute_cost,
              max_cost_boxes, unknown_probability, region_min, region_max, obstacle_geometry,
-             joint_order))
+             joint_order, 1 if certified else 0, tolerance))
         out = init_struct(s.MotionResult)
         base = None if base_pose is None else ctypes.byref(make_pose(base_pose))
         if compute_cost:
@@ -353,13 +362,14 @@ class BatchQueries:
                       occupancy_threshold: float = 0.0,
                       obstacle_geometry: ObstacleGeometryLike = ObstacleGeometry.CELLS,
                       joint_order: JointOrderLike = JointOrder.BY_COUNT,
-                      world: Optional[World] = None
+                      world: Optional[World] = None, certified: bool = False,
+                      tolerance: float = 1e-3
                       ) -> Tuple[np.ndarray, np.ndarray]:
         """Checks many motions (a planner's edges): row m of starts to row m
         of goals, (M, dof) arrays of active joints or of every joint, as
         check_motion does (no cost here).  threads, base_pose (one, or one
         per row), joint_order and world as check_configurations; other
-        keywords as check_motion.
+        keywords (certified, tolerance among them) as check_motion.
 
         Returns (collided, first_fractions): a bool array and each
         motion's first colliding fraction (-1: none).
@@ -378,7 +388,7 @@ class BatchQueries:
             bases = _BasePoses(base_pose, n, "Query.check_motions")
             request = self._motions_requests.lookup(
                 (resolution, threads, self_collision, unknown_policy, occupancy_threshold,
-                 obstacle_geometry, joint_order))
+                 obstacle_geometry, joint_order, 1 if certified else 0, tolerance))
             call_with_world(self, world, "Query.check_motions",
                             lambda: lib.opx_query_check_motions(
                                 self, tree, robot, a.ctypes.data, b.ctypes.data, n, a.shape[1],

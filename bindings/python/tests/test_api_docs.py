@@ -99,10 +99,10 @@ KEYWORDS = {
     "self_distance": (s.SelfDistanceRequest, {}, ()),
     "check_configurations": (s.BatchRequest,
                              {"threads": "max_threads", "distance": "compute_distance"}, ()),
-    "check_motion": (s.MotionRequest, {}, ("max_threads",)),
+    "check_motion": (s.MotionRequest, {"certified": "check"}, ("max_threads",)),
     "distance_spheres": (s.SphereDistanceRequest, {"threads": "max_threads"}, ()),
     "trajectory_cost": (s.TrajectoryCostRequest, {}, ()),
-    "check_motions": (s.MotionRequest, {"threads": "max_threads"},
+    "check_motions": (s.MotionRequest, {"threads": "max_threads", "certified": "check"},
                       ("compute_cost", "max_cost_boxes", "unknown_probability", "region_min",
                        "region_max")),
 }

@@ -183,6 +183,30 @@ class CheckMotions(unittest.TestCase):
         self.assertGreater(result.total_cost, 0.0)
         self.assertEqual(len(query.cost_boxes()), result.cost_box_count)
 
+    def test_certified_is_free_only_when_a_dense_walk_is(self):
+        query, reference = octoprox.Query(), octoprox.Query()
+        collided, fractions = query.check_motions(self.tree, self.arm, self.starts[:8], self.goals[:8],
+                                                  certified=True, threads=2)
+        for m, (a, b) in enumerate(zip(self.starts[:8], self.goals[:8])):
+            result = query.check_motion(self.tree, self.arm, a, b, certified=True, tolerance=1e-3)
+            self.assertEqual(collided[m], bool(result.collided))
+            self.assertEqual(fractions[m], result.first_collision_fraction)
+            f = result.first_collision_fraction
+            end = 2.0 if f < 0 else f - 1e-3
+            for i in range(0, 1001):  # every 1e-3 of the motion before the bracket
+                if i / 1000 >= end:
+                    break
+                self.assertFalse(single(reference, self.tree, self.arm, a + (i / 1000) * (b - a)))
+            sampled = query.check_motion(self.tree, self.arm, a, b, resolution=0.05)
+            if sampled.collided:
+                self.assertTrue(result.collided)
+
+    def test_certified_bad_tolerance(self):
+        with self.assertRaises(octoprox.InvalidArgumentError) as caught:
+            octoprox.Query().check_motion(self.tree, self.arm, self.starts[0], self.goals[0], certified=True,
+                                          tolerance=0.0)
+        self.assertIn("request->tolerance", str(caught.exception))
+
     def test_bad_resolution(self):
         with self.assertRaises(octoprox.InvalidArgumentError) as caught:
             octoprox.Query().check_motion(self.tree, self.arm, self.starts[0], self.goals[0], resolution=0.0)

@@ -74,6 +74,7 @@ DistanceOutcome AmortizedEngine::distance_bound(const LinkSet &links, const Dist
         if (shape.box.empty()) continue;
         double bound = per_link ? std::min((*per_link)[shape.link], settings.cutoff)
                                 : std::min(best.found ? best.distance : settings.cutoff, settings.cutoff);
+        if (per_link && settings.link_cutoffs) bound = std::min(bound, (*settings.link_cutoffs)[shape.link]);
         distance_band(obstacles_, shape, settings, per_link, bound, best, describe);
         if (with_unknown) distance_band(unknown_, shape, settings, per_link, bound, best, describe);
         // Touching settles an unsigned overall minimum; signed looks for the deepest.

@@ -122,7 +122,7 @@ void check_motions(BatchWorkers &workers, const Obstacles &obstacles, const Link
     const size_t tasks = task_count(settings.threads, count);
     workers.prepare(tasks, links, joints, obstacles.world);
     std::vector<uint64_t> steps(count);
-    {
+    if (!settings.certified) {
         MotionScratch scratch;
         scratch.start.resize(starts.model_count()), scratch.goal.resize(goals.model_count());
         for (size_t m = 0; m < count; ++m) {
@@ -141,8 +141,13 @@ void check_motions(BatchWorkers &workers, const Obstacles &obstacles, const Link
         scratch.start.resize(starts.model_count()), scratch.goal.resize(goals.model_count());
         for (size_t m = begin; m < end; ++m) {
             starts.read(m, scratch.start.data()), goals.read(m, scratch.goal.data());
-            const MotionAnswer answer = check_motion(workers[task], scratch, obstacles.tree, scratch.start.data(),
-                                                     scratch.goal.data(), steps[m], bases.at(m), settings);
+            const MotionAnswer answer =
+                settings.certified
+                    ? MotionAnswer::of(check_certified(workers[task], scratch.certified, obstacles.tree, joints,
+                                                       scratch.start.data(), scratch.goal.data(), bases.at(m),
+                                                       settings.certified_settings))
+                    : check_motion(workers[task], scratch, obstacles.tree, scratch.start.data(),
+                                   scratch.goal.data(), steps[m], bases.at(m), settings);
             out_collided[m] = answer.collided() ? 1 : 0;
             if (out_fractions != nullptr) out_fractions[m] = answer.fraction();
         }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "query/batch/batch_worker.hpp"
+#include "query/batch/certified_motion.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -21,6 +22,8 @@ struct MotionSettings {
     double resolution = 0.01;     // largest joint step between samples, rad or m (> 0)
     bool self_collision = false;
     size_t threads = 1;           // batches of motions
+    bool certified = false;       // OPX_MOTION_CERTIFIED: resolution unused (certified_motion.hpp)
+    CertifiedSettings certified_settings;
 };
 
 struct MotionAnswer {
@@ -28,17 +31,28 @@ struct MotionAnswer {
     uint64_t steps = 0;         // samples are steps + 1
     uint64_t samples_checked = 0;
     PathOutcome path;           // check_motion_with_cost only
+    bool certified = false;     // a certified check: its answer below, steps its advancements
+    double certified_fraction = -1.0;
 
-    bool collided() const { return first_sample >= 0; }
+    bool collided() const { return certified ? certified_fraction >= 0.0 : first_sample >= 0; }
     // The first colliding sample's place along the motion in [0, 1]; -1: none.
     double fraction() const {
+        if (certified) return certified_fraction;
         return first_sample < 0 ? -1.0 : steps == 0 ? 0.0 : double(first_sample) / double(steps);
+    }
+    static MotionAnswer of(const CertifiedAnswer &a) {
+        MotionAnswer answer;
+        answer.certified = true;
+        answer.certified_fraction = a.fraction;
+        answer.steps = a.steps, answer.samples_checked = a.measured;
+        return answer;
     }
 };
 
 // What one motion check needs besides its worker, reused motion after motion.
 struct MotionScratch {
     std::vector<double> start, goal, sample, positions_start, positions_goal;
+    CertifiedScratch certified;
 };
 
 // The steps a motion needs at `resolution`: at least 1, and beyond

@@ -60,8 +60,13 @@ DistanceOutcome DirectDistance::run_per_link(const SensorOctree &tree, const Lin
     per_link.assign(links.link_count(), std::numeric_limits<double>::infinity());
     DistanceOutcome overall;
     uint64_t tests = 0;
+    DistanceSettings own = settings;
     for (uint32_t link = 0; link < links.link_count(); ++link) {
-        start(tree, links, settings);
+        if (settings.link_cutoffs != nullptr) {
+            own.cutoff = std::min(settings.cutoff, (*settings.link_cutoffs)[link]);
+            if (own.cutoff < 0.0) continue;
+        }
+        start(tree, links, own);
         only_link_ = static_cast<int32_t>(link);
         if (!links.tree().empty()) search_shapes();
         tests += best_.narrow_tests;

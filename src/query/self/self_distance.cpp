@@ -52,8 +52,15 @@ SelfDistanceOutcome SelfCollider::distance(const LinkSet &links, const SelfDista
     best.distance = settings.cutoff;
     boxes_.update(links);
     boxes_.nearer_than(BodyPairs(links, links.pairs()), settings.cutoff, candidates_);
+    const uint32_t link_count = static_cast<uint32_t>(links.link_count());
+    const auto link_of = [&](uint32_t body) {
+        return body < link_count ? body : links.attached(body - link_count).link;
+    };
     for (const LinkBoxes::Candidate &c : candidates_) {
         if (c.lower >= best.distance) break;
+        if (settings.moving_links != nullptr && !(*settings.moving_links)[link_of(c.pair.a)] &&
+            !(*settings.moving_links)[link_of(c.pair.b)])
+            continue;
         ++best.link_pairs;
         measure_pair(links, c.pair, best);
         if (best.found && best.distance <= 0.0) break;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace octoprox {
 
@@ -35,6 +36,10 @@ struct SelfCollisionOutcome {
 struct SelfDistanceSettings {
     double cutoff = std::numeric_limits<double>::infinity();  // farther: "at least cutoff"
     bool signed_distance = false;   // overlap: minus the deepest penetration
+    // Per link (null: every pair): pairs of two bodies whose links are
+    // both unflagged are skipped (a motion that moves neither leaves their
+    // distance as it is).
+    const std::vector<uint8_t> *moving_links = nullptr;
 };
 
 // The nearest pair of shapes of two links (link_a < link_b).

@@ -123,6 +123,16 @@ pub struct MotionRequest {
     /// [`JointOrder::Active`] the active joints, [`JointOrder::Model`]
     /// every joint.
     pub joint_order: JointOrder,
+    /// Check every configuration of the segment, not samples of it
+    /// (conservative advancement on exact distances; `resolution` does not
+    /// apply, `compute_cost` is refused).  Not colliding then means no
+    /// configuration of the motion collides; colliding, that the
+    /// configuration at the first fraction f is within 1e-8 m of an
+    /// obstacle and none before f - `tolerance` collides.  Default false.
+    pub certified: bool,
+    /// With `certified`: that bracket, a fraction of the motion in (0, 1]
+    /// (default 1e-3).
+    pub tolerance: f64,
 }
 
 impl Default for MotionRequest {
@@ -141,6 +151,8 @@ impl Default for MotionRequest {
             region_max: c.region_max,
             obstacle_geometry: ObstacleGeometry::from_raw(c.obstacle_geometry).unwrap_or_default(),
             joint_order: JointOrder::from_raw(c.joint_order).unwrap_or_default(),
+            certified: c.check == sys::OPX_MOTION_CERTIFIED,
+            tolerance: c.tolerance,
         }
     }
 }
@@ -160,6 +172,8 @@ impl MotionRequest {
             region_max: self.region_max,
             obstacle_geometry: self.obstacle_geometry.raw(),
             joint_order: self.joint_order.raw(),
+            check: if self.certified { sys::OPX_MOTION_CERTIFIED } else { sys::OPX_MOTION_SAMPLED },
+            tolerance: self.tolerance,
             ..Default::default()
         }
     }

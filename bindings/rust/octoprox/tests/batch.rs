@@ -95,6 +95,35 @@ fn motions_equal_a_walk_over_their_samples() {
     }
 }
 
+/// A certified check calls a motion free only when every configuration of
+/// a walk at 1e-3 of it is free, and collides whenever a sampled check does.
+#[test]
+fn certified_motions_are_free_only_when_a_walk_is() {
+    let (mut robot, tree, starts) = (arm(), scatter_map(7), rows(8, 3));
+    let mut rng = Lcg(5);
+    let goals: Vec<f64> = starts.iter().map(|v| v + rng.uniform(-0.4, 0.4)).collect();
+    let certified = MotionRequest { certified: true, max_threads: 2, ..Default::default() };
+    let sampled = MotionRequest { resolution: 0.05, ..Default::default() };
+    let mut query = new_query();
+    let batch = query.check_motions(&tree, &robot, &starts, &goals, BasePoses::Origin, &certified).unwrap();
+    let mut reference = new_query();
+    for (m, (a, b)) in starts.chunks(JOINTS).zip(goals.chunks(JOINTS)).enumerate() {
+        let result = query.check_motion(&tree, &robot, a, b, None, &certified).unwrap();
+        assert_eq!((batch.collided[m], batch.first_fractions[m]), (result.collided, result.first_collision_fraction));
+        let end = result.first_collision_fraction.map_or(2.0, |f| f - certified.tolerance);
+        for i in (0..=1000).take_while(|&i| (i as f64 / 1000.0) < end) {
+            let q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + (i as f64 / 1000.0) * (y - x)).collect();
+            assert!(!single(&mut reference, &tree, &mut robot, &q));
+        }
+        if query.check_motion(&tree, &robot, a, b, None, &sampled).unwrap().collided {
+            assert!(result.collided);
+        }
+    }
+    let bad = MotionRequest { tolerance: -1.0, ..certified };
+    let error = query.check_motion(&tree, &robot, &starts[..7], &goals[..7], None, &bad).unwrap_err();
+    assert!(error.message().contains("request->tolerance"), "{}", error.message());
+}
+
 #[test]
 fn bad_input_is_an_error_naming_the_argument() {
     let (robot, tree) = (arm(), scatter_map(7));
