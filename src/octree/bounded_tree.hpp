@@ -140,6 +140,17 @@ public:
         size_changed = true;
     }
 
+    // Removes child `child` of `node` and the subtree below it, counting
+    // every node; the node's block goes back to the pool with its last
+    // child (child_blocks.cpp).
+    void remove_child(BoundedNode *node, unsigned int child);
+    // Removes every node below `node`, which becomes a leaf.
+    void remove_children(BoundedNode *node);
+    // Moves every block into fresh slabs, in depth-first order, and gives
+    // the old slabs back to the heap: the pool then holds the blocks in
+    // use and at most a slab more.  Out of memory, nothing changes (false).
+    bool compact_blocks();
+
     // The child-block store's memory (child_blocks.cpp).
     ChildBlockPool &child_blocks() { return child_blocks_; }
     const ChildBlockPool &child_blocks() const { return child_blocks_; }
