@@ -322,7 +322,11 @@ OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_dep
  * "to" of the clearing calls: OPX_CELL_FREE sets every covered cell, known
  * or unknown, to the free clamp (clamp_min's log-odds, as
  * clear_robot_volume does), or OPX_CELL_UNKNOWN removes it from the map
- * (unknown space; a node whose cells are all removed goes too).  A cleared
+ * (unknown space; a node whose cells are all removed goes too).  Cost:
+ * the cubes along the region's surface.  Cleared to free, unknown space
+ * there gets new nodes, about one per surface cell (a box of 2 m at 2 cm:
+ * some 10^5), so a box cleared to free must be finite, and a region as
+ * large as the map is cleared to unknown.  A cleared
  * cell loses its point extent.  The map is left as OctoMap would leave it
  * after updating each cell alone: nodes of eight equal leaves pruned,
  * inner nodes holding the max of their children.  On

@@ -64,6 +64,11 @@ OPX_API opx_status opx_octree_clear_region(opx_octree *tree, const double box_mi
         require_pointer(tree, "tree");
         const CellRange box = read_box(box_min, box_max, tree->tree->params().resolution, "box_min", "box_max");
         const bool to_free = read_clear_target(to);
+        for (int axis = 0; to_free && axis < 3; ++axis)
+            if (!std::isfinite(box_min[axis]) || !std::isfinite(box_max[axis]))
+                throw_invalid(format("box_min/box_max hold an infinite value on axis %d: a box cleared to "
+                                     "OPX_CELL_FREE must be finite (its unknown cells become free too)",
+                                     axis));
         if (!box.empty()) tree->tree->clear_region(CellRangeRegion(box, false), to_free);
         return OPX_OK;
     });

@@ -146,10 +146,11 @@ public:
     void remove_child(BoundedNode *node, unsigned int child);
     // Removes every node below `node`, which becomes a leaf.
     void remove_children(BoundedNode *node);
-    // Moves every block into fresh slabs, in depth-first order, and gives
-    // the old slabs back to the heap: the pool then holds the blocks in
-    // use and at most a slab more.  Out of memory, nothing changes (false).
-    bool compact_blocks();
+    // Moves every block into `fresh`, in depth-first order, and gives the
+    // old slabs back to the heap (`fresh` then holds them, to be dropped).
+    // `fresh` must have reserved every block in use (ChildBlockPool::
+    // reserve), so the move allocates nothing and cannot fail.
+    void compact_blocks(ChildBlockPool &fresh);
 
     // The child-block store's memory (child_blocks.cpp).
     ChildBlockPool &child_blocks() { return child_blocks_; }

@@ -201,9 +201,8 @@ bool has_any_child(const BoundedNode &node) {
     return false;
 }
 
-// A copy of the block and of every block below it, from `pool`.  The old
-// blocks are only read, so a copy cut short by std::bad_alloc leaves the
-// map as it was (the new blocks hold no live node: the pool goes whole).
+// A copy of the block and of every block below it, from `pool`, which has
+// them reserved.
 octomap::AbstractOcTreeNode **copy_block(ChildBlockPool &pool, octomap::AbstractOcTreeNode **old) {
     auto *fresh = static_cast<octomap::ChildBlock *>(pool.allocate());
     std::memcpy(static_cast<void *>(fresh), static_cast<const void *>(old), sizeof(octomap::ChildBlock));
@@ -232,18 +231,11 @@ void BoundedOcTree::remove_children(BoundedNode *node) {
     octomap::release_children(this, *node);
 }
 
-bool BoundedOcTree::compact_blocks() {
-    if (root == nullptr || !root->has_child_array()) return true;
-    ChildBlockPool fresh;
-    octomap::AbstractOcTreeNode **copied = nullptr;
-    try {
-        copied = copy_block(fresh, root->child_pointers());
-    } catch (const std::bad_alloc &) {
-        return false;
-    }
-    root->child_pointers() = copied;
+void BoundedOcTree::compact_blocks(ChildBlockPool &fresh) {
+    if (root == nullptr || !root->has_child_array()) return;
+    root->child_pointers() = copy_block(fresh, root->child_pointers());
+    fresh.release_spares();
     child_blocks_.swap(fresh);  // the old slabs go with `fresh`
-    return true;
 }
 
 }  // namespace octoprox

@@ -5,6 +5,8 @@
 #include "octree/decay.hpp"
 #include "octree/region_edit.hpp"
 
+#include <algorithm>
+
 namespace octoprox {
 namespace {
 
@@ -69,11 +71,29 @@ void SensorOctree::decay(double amount) {
     if (removed) recompute_known_bounds();
 }
 
+// The edit and the move into fresh slabs take all their memory first, so
+// a crop that runs out of it changes nothing.
 void SensorOctree::crop(const CellRange &keep) {
-    clear_region(CellRangeRegion(keep, true), false);
-    const ChildBlockPool &pool = tree_->child_blocks();
+    const CellRangeRegion outside(keep, true);
+    RegionEdit edit;  // to unknown
+    const size_t blocks = region_edit_blocks(*tree_, outside, edit);
+    const size_t kept = blocks_after_removal(*tree_, outside);
+    ChildBlockPool &pool = tree_->child_blocks();
     constexpr size_t kSlabBlocks = (size_t{64} << 10) / ChildBlockPool::kBlockBytes;
-    if (pool.blocks_idle() > kSlabBlocks && pool.blocks_idle() > pool.blocks_in_use() / 3) tree_->compact_blocks();
+    const size_t idle = pool.blocks_idle() + pool.blocks_in_use() - std::min(kept, pool.blocks_in_use());
+    ChildBlockPool fresh;
+    const bool compact = idle > kSlabBlocks && idle > kept / 3;
+    if (compact) fresh.reserve(kept);
+    pool.reserve(blocks);
+    ++generation_;
+    EditedCubes edited;
+    {
+        const BoundsScope scope(occupied_log_odds_);
+        edited = apply_region_edit(*tree_, outside, edit);
+    }
+    pool.release_spares();
+    update_known_bounds(edited);
+    if (compact) tree_->compact_blocks(fresh);
 }
 
 }  // namespace octoprox

@@ -71,7 +71,36 @@ public:
         return blocks;
     }
 
+    // The blocks left below an existing node once the region's cells are
+    // removed (exact regions: a leaf in part in the region keeps a cell);
+    // `survives` tells whether the node stays (a node left without
+    // children goes).
+    size_t kept(const BoundedNode *node, const CellKey &cube, bool &survives) const {
+        const Cover cover = rules_.cover(cube);
+        survives = cover != Cover::kAll;
+        if (cover == Cover::kAll) return 0;
+        if (!node->has_child_array()) return cover == Cover::kPart ? virtual_node(cube) : 0;
+        if (cover == Cover::kNone) return all_below(node);
+        size_t blocks = 1;
+        survives = false;
+        for (unsigned int i = 0; i < 8; ++i) {
+            if (!tree_.nodeChildExists(node, i)) continue;
+            bool child_survives = false;
+            blocks += kept(tree_.getNodeChild(node, i), cube.child(static_cast<int>(i)), child_survives);
+            survives |= child_survives;
+        }
+        return survives ? blocks : 0;
+    }
+
 private:
+    size_t all_below(const BoundedNode *node) const {
+        if (!node->has_child_array()) return 0;
+        size_t blocks = 1;
+        for (unsigned int i = 0; i < 8; ++i)
+            if (tree_.nodeChildExists(node, i)) blocks += all_below(tree_.getNodeChild(node, i));
+        return blocks;
+    }
+
     const BoundedOcTree &tree_;
     const EditRules &rules_;
 };
@@ -164,6 +193,14 @@ size_t region_edit_blocks(const BoundedOcTree &tree, const CubeRegion &region, c
     if (root != nullptr) return count.existing(root, CellKey{});
     if (!edit.to_free || rules.cover(CellKey{}) != Cover::kPart) return 0;
     return count.virtual_node(CellKey{});
+}
+
+size_t blocks_after_removal(const BoundedOcTree &tree, const CubeRegion &region) {
+    const RegionEdit edit;  // to unknown
+    const EditRules rules(region, edit);
+    const BoundedNode *root = tree.getRoot();
+    bool survives = false;
+    return root == nullptr ? 0 : BlockCount(tree, rules).kept(root, CellKey{}, survives);
 }
 
 EditedCubes apply_region_edit(BoundedOcTree &tree, const CubeRegion &region, const RegionEdit &edit) {

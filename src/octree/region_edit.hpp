@@ -65,6 +65,11 @@ struct EditedCubes {
 // an edit that runs out of memory fails before it starts.
 size_t region_edit_blocks(const BoundedOcTree &tree, const CubeRegion &region, const RegionEdit &edit);
 
+// The blocks the map holds after removing the cells of a region whose
+// kPart answers are exact (a CellRange region): for a crop, which moves
+// them into fresh slabs reserved before it starts.
+size_t blocks_after_removal(const BoundedOcTree &tree, const CubeRegion &region);
+
 // Call inside a BoundsScope, with the blocks reserved.
 EditedCubes apply_region_edit(BoundedOcTree &tree, const CubeRegion &region, const RegionEdit &edit);
 

@@ -135,6 +135,8 @@ static void bad_input_changes_nothing(void **state) {
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "box_max", opx_octree_clear_region(tree, lo, nan_box, OPX_CELL_FREE));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "inverted", opx_octree_clear_region(tree, lo, inverted, OPX_CELL_FREE));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "to", opx_octree_clear_region(tree, lo, hi, OPX_CELL_OCCUPIED));
+    const double far[3] = {1.0, INFINITY, 1.0};
+    expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "finite", opx_octree_clear_region(tree, lo, far, OPX_CELL_FREE));
     fn = "opx_octree_crop";
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "box_max", opx_octree_crop(tree, lo, NULL));
     expect_failure(OPX_ERROR_INVALID_ARGUMENT, fn, "inverted", opx_octree_crop(tree, lo, inverted));

@@ -34,6 +34,7 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_READ] = op_query_read,
     [OP_QUERY_SPHERES] = op_query_spheres,
     [OP_QUERY_BATCH] = op_query_batch,
+    [OP_OCTREE_EDIT] = op_octree_edit,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }

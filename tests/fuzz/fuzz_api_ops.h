@@ -35,6 +35,7 @@ enum fuzz_api_op {
     OP_QUERY_READ,
     OP_QUERY_SPHERES,
     OP_QUERY_BATCH,
+    OP_OCTREE_EDIT,
     OP_COUNT
 };
 

@@ -171,6 +171,7 @@ void write_api_seeds(const char *out_dir) {
          OP_QUERY_COLLIDE},
         {LOAD_SPHERE_ROBOT, BATCH_OF_ROBOT, OP_QUERY_BATCH, BATCH_OF_ROBOT, OP_OCTREE_EXERCISE, BATCH_OF_ROBOT},
         {OP_ROBOT_LOAD, BATCH_OF_ROBOT, OP_OCTREE_CLEAR, BATCH_OF_ROBOT, OP_ROBOT_JOINTS, OP_QUERY_BATCH},
+        {OP_OCTREE_EDIT, OP_QUERY_COLLIDE, OP_OCTREE_EDIT, OP_QUERY_DISTANCE, OP_OCTREE_EDIT, OP_OCTREE_EXERCISE},
     };
     const size_t tails = sizeof tail_ops / sizeof tail_ops[0];
     for (size_t s = 0; s < 2 * tails; ++s) {

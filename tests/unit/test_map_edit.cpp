@@ -212,7 +212,9 @@ TEST(MapEdit, CropKeepsTheBoxAlone) {
         auto tree = random_map(rng);
         const Dense before = dense_of(*tree);
         const CellRange range = random_range(rng);
+        const size_t kept = blocks_after_removal(tree->octomap_tree(), CellRangeRegion(range, true));
         tree->crop(range);
+        EXPECT_EQ(tree->octomap_tree().child_blocks().blocks_in_use(), kept);
         Dense expected;
         for (const auto &[key, cell] : before)
             if (inside(range, key)) expected[key] = cell;
