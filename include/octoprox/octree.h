@@ -110,10 +110,18 @@ typedef struct opx_insert_options {
      * same update.  Needs `robot`.  Default 0. */
     uint32_t clear_robot_volume;
     uint32_t reserved1;
+    /** Nonzero: only the cells of the box [bounds_min, bounds_max] (map
+     * frame; "Boxes of the map" below) change; every other cell stays as it
+     * was.  Default 0 (the whole map). */
+    uint32_t use_bounds;
+    uint32_t reserved2;
+    double bounds_min[3];
+    double bounds_max[3];
 } opx_insert_options;
 
 #define OPX_INSERT_OPTIONS_INIT \
-    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u, NULL, 0.0, 0u, 0u}
+    {sizeof(opx_insert_options), OPX_INSERT_RAYCAST, OPX_POSE_IDENTITY, -1.0, 1u, 0u, NULL, 0.0, 0u, 0u, \
+     0u, 0u, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}
 OPX_API opx_status opx_insert_options_init(opx_insert_options *options, size_t size);
 
 /** What one insert did.  Every point (every pixel of a depth image) is
@@ -192,6 +200,21 @@ OPX_API opx_status opx_insert_report_init(opx_insert_report *report, size_t size
  * The map after the call does not depend on max_threads.  Invalid: a link
  * set whose poses were never set, a robot_padding that is negative, NaN or
  * infinite, clear_robot_volume without a robot; the map is then unchanged.
+ */
+
+/*
+ * Bounded inserts (options->use_bounds): the frame is inserted as without
+ * bounds (every point's ray, cut at max_range or at the robot, every
+ * endpoint, each cell updated once, an endpoint winning over a ray), and
+ * then only the updates of cells inside the box are applied.  So a ray
+ * from outside the box still makes the cells it crosses inside the box
+ * more free.  OctoMap's bounding-box insert (setBBXMin/Max, useBBXLimit)
+ * differs there: it drops every point outside its box and every point
+ * beyond max_range, so their rays change nothing even inside it; both
+ * change no cell outside the box.  The report counts every point as
+ * without bounds; cells_hit, cells_missed and cells_cleared count the
+ * cells inside the box only.  bounds_min and bounds_max follow the rules
+ * of "Boxes of the map" below (NaN or inverted: an invalid argument).
  */
 
 /**
@@ -278,6 +301,92 @@ OPX_API opx_status opx_octree_insert_depth_image(opx_octree *tree, const opx_dep
                                                  const opx_camera_intrinsics *intrinsics,
                                                  const opx_insert_options *options,
                                                  opx_insert_report *out_report);
+
+/* ---- Changing regions of the map ---------------------------------------- */
+
+/*
+ * Boxes of the map: a box is given by its min and max corners in the map
+ * frame (metres), min <= max on every axis; either may be infinite (no
+ * limit on that side) and reach beyond the map's cube.  It covers the
+ * finest cells holding a point of the closed box: on each axis, from the
+ * cell holding min to the cell holding max, each found as
+ * opx_octree_classify finds a point's cell (OctoMap's coordToKey: a point
+ * on the face between two cells lies in the upper one).  So at 0.1 m the
+ * box from 0.2 to 0.5 on an axis covers the cells [0.2, 0.3) to
+ * [0.5, 0.6): the cell above the upper face too, as OctoMap's bounding
+ * box does; use 0.5 - 1e-9 to stop below it.  A pruned leaf the box cuts
+ * through is split along the box's faces; cells wholly inside or outside
+ * change as one.  A NaN corner or min > max on an axis is an invalid
+ * argument naming box_min or box_max, and the map is unchanged.
+ *
+ * "to" of the clearing calls: OPX_CELL_FREE sets every covered cell, known
+ * or unknown, to the free clamp (clamp_min's log-odds, as
+ * clear_robot_volume does), or OPX_CELL_UNKNOWN removes it from the map
+ * (unknown space; a node whose cells are all removed goes too).  Cost:
+ * the cubes along the region's surface.  Cleared to free, unknown space
+ * there gets new nodes, about one per surface cell (a box of 2 m at 2 cm:
+ * some 10^5), so a box cleared to free must be finite, and a region as
+ * large as the map is cleared to unknown.  A cleared
+ * cell loses its point extent.  The map is left as OctoMap would leave it
+ * after updating each cell alone: nodes of eight equal leaves pruned,
+ * inner nodes holding the max of their children.  On
+ * OPX_ERROR_OUT_OF_MEMORY the map is unchanged.
+ */
+
+/** Clears every cell of the box [box_min, box_max] (map frame) to `to`:
+ * OPX_CELL_FREE or OPX_CELL_UNKNOWN (see above).  Use it when a grasped
+ * object leaves the scene (to OPX_CELL_UNKNOWN, or to OPX_CELL_FREE when
+ * the space it held is known to be empty). */
+OPX_API opx_status opx_octree_clear_region(opx_octree *tree, const double box_min[3],
+                                           const double box_max[3], int32_t to);
+
+/**
+ * Clears the cells occupied by an object to `to` (OPX_CELL_FREE or
+ * OPX_CELL_UNKNOWN, see above): `shape_count` shapes (opx_shape,
+ * linkset.h, as opx_linkset_attach_object takes them: each at its pose in
+ * the object frame, shapes[i].pose, sizes as for links), the object frame
+ * at `pose` in the map frame (x y z qx qy qz qw; NULL: identity) -- a
+ * world object's shapes at its pose (opx_world_get_shape,
+ * opx_world_get_object_pose), or an attached object's shapes at its link's
+ * pose composed with its pose on the link.  A finest cell is cleared when
+ * one of the shapes touches its cube, decided exactly as a collision query
+ * decides that an unpadded link shape touches a cell (touching counts,
+ * within 1e-9 m; a mesh is its surface); so afterwards, cleared to
+ * unknown, the shapes collide with no cell of the map.  Use it when an
+ * object is added to the world, whose sensed image would count it twice.
+ * shape_count 0 changes nothing.  An invalid shape names shapes[i].
+ */
+struct opx_shape; /* linkset.h */
+OPX_API opx_status opx_octree_clear_shapes(opx_octree *tree, const struct opx_shape *shapes,
+                                           size_t shape_count, const opx_pose *pose, int32_t to);
+
+/**
+ * Forgets a little of what the map holds: every known cell's log-odds v
+ * moves toward 0 by `amount` (log-odds units, >= 0): v - amount when v is
+ * positive, v + amount when negative, computed in double and rounded to
+ * the stored float, never across 0.  A cell whose log-odds reaches 0 (or
+ * holds 0) becomes unknown and its node is removed, a node whose cells
+ * all go with it; nodes left are pruned and hold the max of their children
+ * as after an insert.  A cell that ends below the occupied threshold loses
+ * its point extent.  amount 0 changes nothing; +infinity removes every
+ * cell.  Called once per frame, an obstacle that left the view fades: an
+ * occupied cell at clamp_max takes logodds(clamp_max) / amount calls to
+ * go.  NaN or a negative amount is an invalid argument; the map is then
+ * unchanged.  Allocates nothing.
+ */
+OPX_API opx_status opx_octree_decay(opx_octree *tree, double amount);
+
+/**
+ * Removes every cell outside the box [box_min, box_max] (map frame; "Boxes
+ * of the map" above): the cells the box covers stay as they are.  A mobile
+ * base keeps a window around itself this way.  The memory of the removed
+ * nodes is given back to the heap (the nodes left are moved together)
+ * when more than a quarter of the map's node memory (and more than
+ * 64 KiB) is then idle, so
+ * opx_octree_get_stats' memory_bytes follows the cells kept.  On
+ * OPX_ERROR_OUT_OF_MEMORY the map is unchanged.
+ */
+OPX_API opx_status opx_octree_crop(opx_octree *tree, const double box_min[3], const double box_max[3]);
 
 /* ---- Reading the map --------------------------------------------------- */
 

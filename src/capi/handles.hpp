@@ -42,7 +42,14 @@ struct InsertRequest {
     const LinkSet *robot = nullptr;  // nullptr: no self-filtering
     double robot_padding = 0.0;
     bool clear_robot_volume = false;
+    // options.use_bounds: the box, checked (map frame, metres).
+    bool use_bounds = false;
+    double bounds_min[3] = {0, 0, 0}, bounds_max[3] = {0, 0, 0};
 };
+// The cells of a caller's box [box_min, box_max] (NaN or inverted: an
+// invalid argument naming min_name or max_name).
+CellRange read_box(const double box_min[3], const double box_max[3], double resolution, const char *min_name,
+                  const char *max_name);
 // Caller's insert options (NULL: defaults) read, versioned and validated.
 InsertRequest read_insert_options(const opx_insert_options *options);
 // Inserts the points with the request's robot filtered out (insert_robot.cpp).

@@ -9,8 +9,13 @@
 namespace octoprox::capi {
 
 InsertCounts run_insert(SensorOctree &tree, const PointSource &points, const InsertRequest &request) {
-    if (request.robot == nullptr) return tree.insert(points, request.settings);
     InsertSettings settings = request.settings;
+    CellRange bounds;
+    if (request.use_bounds) {
+        bounds = cell_range_of_box(request.bounds_min, request.bounds_max, tree.params().resolution);
+        settings.bounds = &bounds;
+    }
+    if (request.robot == nullptr) return tree.insert(points, settings);
     const PaddedRobot robot(*request.robot, request.robot_padding, settings.sensor_pose.translation);
     std::vector<uint64_t> clear;
     if (request.clear_robot_volume) {

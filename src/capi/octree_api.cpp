@@ -91,6 +91,12 @@ InsertRequest read_insert_options(const opx_insert_options *options) {
     settings.max_range = merged.max_range;
     settings.max_threads = merged.max_threads;
     read_robot_fields(merged, request);
+    if (merged.use_bounds != 0) {
+        read_box(merged.bounds_min, merged.bounds_max, 1.0, "options.bounds_min", "options.bounds_max");
+        request.use_bounds = true;
+        std::copy(merged.bounds_min, merged.bounds_min + 3, request.bounds_min);
+        std::copy(merged.bounds_max, merged.bounds_max + 3, request.bounds_max);
+    }
     return request;
 }
 

@@ -140,6 +140,18 @@ public:
         size_changed = true;
     }
 
+    // Removes child `child` of `node` and the subtree below it, counting
+    // every node; the node's block goes back to the pool with its last
+    // child (child_blocks.cpp).
+    void remove_child(BoundedNode *node, unsigned int child);
+    // Removes every node below `node`, which becomes a leaf.
+    void remove_children(BoundedNode *node);
+    // Moves every block into `fresh`, in depth-first order, and gives the
+    // old slabs back to the heap (`fresh` then holds them, to be dropped).
+    // `fresh` must have reserved every block in use (ChildBlockPool::
+    // reserve), so the move allocates nothing and cannot fail.
+    void compact_blocks(ChildBlockPool &fresh);
+
     // The child-block store's memory (child_blocks.cpp).
     ChildBlockPool &child_blocks() { return child_blocks_; }
     const ChildBlockPool &child_blocks() const { return child_blocks_; }

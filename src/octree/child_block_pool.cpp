@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <new>
+#include <utility>
 
 namespace octoprox {
 namespace {
@@ -55,6 +56,18 @@ void *ChildBlockPool::allocate() {
     ++in_use_;
     peak_in_use_ = std::max(peak_in_use_, in_use_);
     return block;
+}
+
+void ChildBlockPool::swap(ChildBlockPool &other) noexcept {
+    slabs_.swap(other.slabs_);
+    spares_.swap(other.spares_);
+    std::swap(free_, other.free_);
+    std::swap(next_, other.next_);
+    std::swap(end_, other.end_);
+    std::swap(in_use_, other.in_use_);
+    std::swap(free_count_, other.free_count_);
+    std::swap(peak_in_use_, other.peak_in_use_);
+    std::swap(reserved_, other.reserved_);
 }
 
 void ChildBlockPool::release(void *block) {

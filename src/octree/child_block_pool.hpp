@@ -42,6 +42,9 @@ public:
     size_t peak_blocks_in_use() const { return peak_in_use_; }
     void reset_peak() { peak_in_use_ = in_use_; }
     size_t bytes_reserved() const { return reserved_; }  // all slabs
+    // Blocks the slabs hold beyond those in use (free, or not yet carved).
+    size_t blocks_idle() const { return reserved_ / kBlockBytes - in_use_; }
+    void swap(ChildBlockPool &other) noexcept;
 
 private:
     struct Slab {

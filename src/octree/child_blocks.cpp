@@ -19,6 +19,7 @@
 #include "octree/update_worker.hpp"
 
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <new>
 
@@ -179,3 +180,62 @@ size_t BoundedTreeBase::memoryUsage() const {
 }
 
 }  // namespace octomap
+
+namespace octoprox {
+namespace {
+
+size_t nodes_below(const BoundedNode &node) {
+    if (!node.has_child_array()) return 0;
+    const auto *pointers = static_cast<octomap::AbstractOcTreeNode *const *>(node.child_array());
+    size_t count = 0;
+    for (unsigned int i = 0; i < 8; ++i)
+        if (pointers[i] != nullptr) count += 1 + nodes_below(*static_cast<const BoundedNode *>(pointers[i]));
+    return count;
+}
+
+bool has_any_child(const BoundedNode &node) {
+    if (!node.has_child_array()) return false;
+    const auto *pointers = static_cast<octomap::AbstractOcTreeNode *const *>(node.child_array());
+    for (unsigned int i = 0; i < 8; ++i)
+        if (pointers[i] != nullptr) return true;
+    return false;
+}
+
+// A copy of the block and of every block below it, from `pool`, which has
+// them reserved.
+octomap::AbstractOcTreeNode **copy_block(ChildBlockPool &pool, octomap::AbstractOcTreeNode **old) {
+    auto *fresh = static_cast<octomap::ChildBlock *>(pool.allocate());
+    std::memcpy(static_cast<void *>(fresh), static_cast<const void *>(old), sizeof(octomap::ChildBlock));
+    for (unsigned int i = 0; i < 8; ++i) {
+        if (old[i] == nullptr) continue;
+        BoundedNode *slot = octomap::slot_of(fresh->pointers, i);
+        fresh->pointers[i] = slot;
+        octomap::AbstractOcTreeNode **&below = slot->child_pointers();
+        if (below != nullptr) below = copy_block(pool, below);
+    }
+    return fresh->pointers;
+}
+
+}  // namespace
+
+void BoundedOcTree::remove_child(BoundedNode *node, unsigned int child) {
+    const size_t below = nodes_below(*getNodeChild(node, child));
+    deleteNodeChild(node, child);  // counts the child; its subtree goes with it
+    tree_size -= below;
+    if (!has_any_child(*node)) octomap::release_children(this, *node);
+}
+
+void BoundedOcTree::remove_children(BoundedNode *node) {
+    tree_size -= nodes_below(*node);
+    size_changed = true;
+    octomap::release_children(this, *node);
+}
+
+void BoundedOcTree::compact_blocks(ChildBlockPool &fresh) {
+    if (root == nullptr || !root->has_child_array()) return;
+    root->child_pointers() = copy_block(fresh, root->child_pointers());
+    fresh.release_spares();
+    child_blocks_.swap(fresh);  // the old slabs go with `fresh`
+}
+
+}  // namespace octoprox

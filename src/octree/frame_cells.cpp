@@ -240,4 +240,27 @@ FrameCells sorted_cells(std::vector<uint64_t> cells) {
     return out;
 }
 
+void clip_cells(FrameCells &cells, const CellRange &bounds) {
+    size_t kept = 0;
+    struct {
+        uint64_t hits = 0, misses = 0, cleared = 0;
+    } counts;
+    KeyBox box;
+    for (const uint64_t cell : cells.cells) {
+        uint32_t key[3];
+        morton_decode(FrameCells::code(cell), key[0], key[1], key[2]);
+        if (!bounds.contains(key)) continue;
+        cells.cells[kept++] = cell;
+        box.grow(key);
+        if (FrameCells::is_hit(cell)) ++counts.hits;
+        else if (FrameCells::is_clear(cell)) ++counts.cleared;
+        else ++counts.misses;
+    }
+    cells.cells.resize(kept);
+    cells.hits = counts.hits;
+    cells.misses = counts.misses;
+    cells.cleared = counts.cleared;
+    cells.box = box;
+}
+
 }  // namespace octoprox

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "octree/frame_marks.hpp"
+#include "octree/cell_range.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -62,5 +63,7 @@ FrameCells sorted_cells(std::vector<uint64_t> cells);
 // once).  Such a cell replaces a miss of the same cell; a hit keeps its
 // cell (no sensed point lies inside the robot).
 void add_clear_cells(FrameCells &cells, const std::vector<uint64_t> &clear);
+// Keeps the cells inside `bounds` alone, their counts and box recomputed.
+void clip_cells(FrameCells &cells, const CellRange &bounds);
 
 }  // namespace octoprox

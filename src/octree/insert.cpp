@@ -147,6 +147,7 @@ InsertCounts SensorOctree::insert(const PointSource &points, const InsertSetting
     FrameCells cells =
         settings.raycast ? raycast_cells(*tree_, rays, settings.max_threads) : endpoint_cells(*tree_, rays);
     if (settings.clear_cells != nullptr) add_clear_cells(cells, *settings.clear_cells);
+    if (settings.bounds != nullptr) clip_cells(cells, *settings.bounds);
     // Everything that may allocate happens above or here: the cell updates
     // below take their nodes from reserved blocks, so a frame goes into the
     // map whole or, out of memory, not at all.  (An empty map's root is made

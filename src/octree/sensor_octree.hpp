@@ -5,6 +5,7 @@
 
 #include "geometry/aabb.hpp"
 #include "octree/frame_marks.hpp"
+#include "octree/cell_range.hpp"
 #include "geometry/pose.hpp"
 #include "octree/octree_params.hpp"
 #include "octree/obstacle_grid_cache.hpp"
@@ -20,6 +21,8 @@
 namespace octoprox {
 
 class BoundedOcTree;
+class CubeRegion;
+struct EditedCubes;
 
 enum CellClass : int { kUnknown = 0, kFree = 1, kUncertain = 2, kOccupied = 3 };
 
@@ -54,6 +57,9 @@ struct InsertSettings {
     // Finest cells set to the free clamp in the same update (Morton codes
     // of their keys, any order, each once); nullptr: none.
     const std::vector<uint64_t> *clear_cells = nullptr;
+    // Only cells inside change (their counts alone are reported); nullptr:
+    // the whole map.
+    const CellRange *bounds = nullptr;
 };
 
 struct InsertCounts {
@@ -103,6 +109,15 @@ public:
     CellInfo classify(const Vec3 &point) const;  // point inside the cube
     TreeStats stats() const;
     void clear();
+    // Every cell of the region (region_edit.hpp) set to the free clamp, or
+    // removed (unknown).  All or nothing: throws std::bad_alloc, changing
+    // nothing, when the blocks the edit needs cannot be had.
+    void clear_region(const CubeRegion &region, bool to_free);
+    // Every known cell's log-odds toward 0 by amount (> 0; decay.hpp).
+    void decay(double amount);
+    // Every cell outside `keep` removed; the pool then gives its idle
+    // memory back to the heap when it holds more than a quarter idle.
+    void crop(const CellRange &keep);
     // Bounds of every observed cell, kept up to date by each change, so
     // queries can bound unknown space without a pass over the map.
     const Aabb &known_bounds() const { return known_bounds_; }
@@ -127,6 +142,7 @@ private:
     void apply_params();
     void grow_known_bounds(const KeyBox &keys);
     void recompute_known_bounds();
+    void update_known_bounds(const EditedCubes &edited);
 
     OctreeParams params_;
     std::unique_ptr<BoundedOcTree> tree_;

@@ -111,12 +111,15 @@ static void struct_layouts_are_fixed(void **state) {
     assert_int_equal(sizeof(opx_pose), 56);
     assert_int_equal(sizeof(opx_octree_options), 64);
     assert_int_equal(offsetof(opx_octree_options, resolution), 8);
-    assert_int_equal(sizeof(opx_insert_options), 104);
+    assert_int_equal(sizeof(opx_insert_options), 160);
     assert_int_equal(offsetof(opx_insert_options, sensor_pose), 8);
     assert_int_equal(offsetof(opx_insert_options, max_threads), 72);
     assert_int_equal(offsetof(opx_insert_options, robot), 80);
     assert_int_equal(offsetof(opx_insert_options, robot_padding), 88);
     assert_int_equal(offsetof(opx_insert_options, clear_robot_volume), 96);
+    assert_int_equal(offsetof(opx_insert_options, use_bounds), 104);
+    assert_int_equal(offsetof(opx_insert_options, bounds_min), 112);
+    assert_int_equal(offsetof(opx_insert_options, bounds_max), 136);
     assert_int_equal(sizeof(opx_insert_report), 88);
     assert_int_equal(offsetof(opx_insert_report, pixels_no_return), 56);
     assert_int_equal(offsetof(opx_insert_report, cells_cleared), 80);

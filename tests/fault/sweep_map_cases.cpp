@@ -183,6 +183,52 @@ private:
     opx_insert_report report_ = OPX_INSERT_REPORT_INIT;
 };
 
+// Clearing, decay and cropping: the blocks a clear takes (pruned leaves
+// split along the box, free space made) and a crop's fresh slabs come
+// first, so a failure leaves the map as it was.
+enum class EditKind { kBoxToFree, kBoxToUnknown, kShapesToFree, kDecay, kCrop, kBoundedInsert };
+
+class EditMap : public Attempt {
+public:
+    explicit EditMap(EditKind kind) : tree_(load_base_map()), kind_(kind), cloud_(room_cloud(kFramePoints, 3)) {}
+    ~EditMap() override { opx_octree_destroy(tree_); }
+    opx_status call() override {
+        const double lo[3] = {-0.73, -0.41, 0.05}, hi[3] = {0.66, 0.92, 1.33};
+        switch (kind_) {
+        case EditKind::kBoxToFree: return opx_octree_clear_region(tree_, lo, hi, OPX_CELL_FREE);
+        case EditKind::kBoxToUnknown: return opx_octree_clear_region(tree_, lo, hi, OPX_CELL_UNKNOWN);
+        case EditKind::kShapesToFree: {
+            opx_shape shapes[2] = {OPX_SHAPE_INIT, OPX_SHAPE_INIT};
+            shapes[0].kind = OPX_SHAPE_SPHERE;
+            shapes[0].radius = 0.45;
+            shapes[1].kind = OPX_SHAPE_BOX;
+            shapes[1].size[0] = shapes[1].size[1] = shapes[1].size[2] = 0.6;
+            shapes[1].pose.position[2] = 0.7;
+            opx_pose pose = OPX_POSE_IDENTITY;
+            pose.position[0] = 0.3;
+            return opx_octree_clear_shapes(tree_, shapes, 2, &pose, OPX_CELL_FREE);
+        }
+        case EditKind::kDecay: return opx_octree_decay(tree_, 0.5);
+        case EditKind::kCrop: return opx_octree_crop(tree_, lo, hi);
+        case EditKind::kBoundedInsert: {
+            opx_insert_options options = sensor_insert_options(OPX_INSERT_RAYCAST);
+            options.use_bounds = 1;
+            for (int axis = 0; axis < 3; ++axis) options.bounds_min[axis] = lo[axis], options.bounds_max[axis] = hi[axis];
+            return opx_octree_insert_points(tree_, cloud_.data(), kFramePoints, 0, OPX_SCALAR_FLOAT32, &options,
+                                            nullptr);
+        }
+        }
+        return OPX_ERROR_INTERNAL;
+    }
+    void record_state(Record &record) override { record_map(record, tree_); }
+    void record_answer(Record &record) override { record_map(record, tree_); }
+
+private:
+    opx_octree *tree_;
+    EditKind kind_;
+    std::vector<float> cloud_;
+};
+
 class SaveImage : public Attempt {
 public:
     explicit SaveImage(int32_t format) : tree_(load_base_map()), format_(format), buffer_(1 << 20) {}
@@ -278,6 +324,12 @@ std::vector<SweepCase> map_and_robot_cases() {
                                {}, OPX_INSERT_ENDPOINTS, kLargeFramePoints),
         make_case<InsertDepthImage>("opx_octree_insert_depth_image", {}),
         make_case<InsertFiltered>("opx_octree_insert_points self-filtered", {}),
+        make_case<EditMap>("opx_octree_clear_region to free", {}, EditKind::kBoxToFree),
+        make_case<EditMap>("opx_octree_clear_region to unknown", {}, EditKind::kBoxToUnknown),
+        make_case<EditMap>("opx_octree_clear_shapes to free", {}, EditKind::kShapesToFree),
+        make_case<EditMap>("opx_octree_decay", {}, EditKind::kDecay),
+        make_case<EditMap>("opx_octree_crop", {}, EditKind::kCrop),
+        make_case<EditMap>("opx_octree_insert_points with bounds", {}, EditKind::kBoundedInsert),
         make_case<SaveImage>("opx_octree_save_memory .bt", {}, OPX_FORMAT_BT),
         make_case<SaveImage>("opx_octree_save_memory .ot", {}, OPX_FORMAT_OT),
         make_case<LoadUrdf>("opx_linkset_load_urdf_string", {kUrdfdomNumbers, kTinyXmlLeak}),

@@ -267,8 +267,35 @@ void filtered_inserts(Record &record, const SharedScene &scene) {
     }
 }
 
+// Clearing, decay, cropping and bounded inserts on maps of this thread's
+// own, while the other threads query the shared one.
+void map_edits(Record &record, const SharedScene &scene) {
+    const std::vector<unsigned char> image = map_image(scene.tree, OPX_FORMAT_OT);
+    const std::vector<float> cloud = room_cloud(300, 5);
+    opx_octree *map = nullptr;
+    record.add("load_memory", opx_octree_load_memory(image.data(), image.size(), nullptr, &map));
+    const double lo[3] = {-0.83, -0.52, 0.11}, hi[3] = {0.71, 0.94, 1.27};
+    record.add("clear_region free", opx_octree_clear_region(map, lo, hi, OPX_CELL_FREE));
+    opx_shape sphere = OPX_SHAPE_INIT;
+    sphere.kind = OPX_SHAPE_SPHERE;
+    sphere.radius = 0.4;
+    opx_pose pose = OPX_POSE_IDENTITY;
+    pose.position[2] = 0.6;
+    record.add("clear_shapes unknown", opx_octree_clear_shapes(map, &sphere, 1, &pose, OPX_CELL_UNKNOWN));
+    opx_insert_options options = sensor_insert_options(OPX_INSERT_RAYCAST);
+    options.use_bounds = 1;
+    for (int axis = 0; axis < 3; ++axis) options.bounds_min[axis] = -1.5, options.bounds_max[axis] = 1.5;
+    record.add("insert_points bounded",
+               opx_octree_insert_points(map, cloud.data(), cloud.size() / 3, 0, OPX_SCALAR_FLOAT32, &options, nullptr));
+    record.add("decay", opx_octree_decay(map, 0.3));
+    record.add("crop", opx_octree_crop(map, lo, hi));
+    record_map(record, map);
+    opx_octree_destroy(map);
+}
+
 Record every_answer(const SharedScene &scene) {
     Record record;
+    map_edits(record, scene);
     filtered_inserts(record, scene);
     sphere_queries(record, scene);
     sphere_batch_queries(record, scene);

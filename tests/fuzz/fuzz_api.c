@@ -36,6 +36,7 @@ static const fuzz_operation operations[OP_COUNT] = {
     [OP_QUERY_BATCH] = op_query_batch,
     [OP_QUERY_SPHERE_DISTANCE] = op_query_sphere_distance,
     [OP_QUERY_TRAJECTORY_COST] = op_query_trajectory_cost,
+    [OP_OCTREE_EDIT] = op_octree_edit,
 };
 
 size_t take_slot(fuzz_api *api) { return take_below(&api->in, FUZZ_SLOTS); }

@@ -73,6 +73,7 @@ void op_octree_clear(fuzz_api *api);
 void op_octree_read(fuzz_api *api);
 void op_octree_image(fuzz_api *api);
 void op_octree_exercise(fuzz_api *api);
+void op_octree_edit(fuzz_api *api);
 
 /* fuzz_api_linkset.c */
 void op_linkset_create(fuzz_api *api);

@@ -176,3 +176,88 @@ void op_octree_exercise(fuzz_api *api) {
     const opx_octree *tree = take_tree(api);
     if (tree != NULL) fuzz_exercise_tree(tree);
 }
+
+/* A box corner: mostly a whole number of cells within the rays' reach
+ * (so that an edit's surface stays small at any resolution), sometimes
+ * any double (NaN and infinities included). */
+static void take_corner(fuzz_input *in, double resolution, double corner[3]) {
+    for (int axis = 0; axis < 3; ++axis)
+        corner[axis] = take_u8(in) < 230 ? ((double)(int8_t)take_u8(in) / 5.0) * resolution : take_double(in);
+}
+
+/* A few small shapes (sizes and offsets within a few cells). */
+static size_t take_edit_shapes(fuzz_input *in, double resolution, opx_shape shapes[3]) {
+    const size_t count = take_below(in, 4);
+    for (size_t i = 0; i < count; ++i) {
+        opx_shape *shape = &shapes[i];
+        *shape = (opx_shape)OPX_SHAPE_INIT;
+        shape->struct_size = take_struct_size(in, sizeof *shape);
+        shape->kind = (int32_t)take_below(in, 8); /* 0 and 7 are no kind; 5 and 6 need vertices */
+        const double size = take_u8(in) < 240 ? (double)take_u8(in) / 32.0 * resolution : take_double(in);
+        shape->radius = size;
+        shape->length = 2.0 * size;
+        for (int axis = 0; axis < 3; ++axis) {
+            shape->size[axis] = size * (1 + axis);
+            shape->pose.position[axis] = (double)(int8_t)take_u8(in) / 16.0 * resolution;
+        }
+    }
+    return count;
+}
+
+/* Clearing a box or shapes, decay, cropping, or an insert with bounds. */
+void op_octree_edit(fuzz_api *api) {
+    fuzz_input *in = &api->in;
+    opx_octree *tree = take_tree(api);
+    const double resolution = resolution_of(tree);
+    double lo[3], hi[3];
+    take_corner(in, resolution, lo);
+    take_corner(in, resolution, hi);
+    const uint8_t targets[4] = {OPX_CELL_FREE, OPX_CELL_UNKNOWN, OPX_CELL_OCCUPIED, 9};
+    const int32_t to = targets[take_below(in, 4)];
+    const uint8_t nulls = take_u8(in) < 220 ? 0 : take_u8(in);
+    /* Cleared to free, unknown space along the region's surface gets a
+     * node per cell (octree.h): far corners would take the run's memory
+     * and time.  They go NaN there (still an invalid argument). */
+    for (int axis = 0; to == OPX_CELL_FREE && axis < 3; ++axis) {
+        if (!(fabs(lo[axis]) <= 64.0 * resolution)) lo[axis] = NAN;
+        if (!(fabs(hi[axis]) <= 64.0 * resolution)) hi[axis] = NAN;
+    }
+    switch (take_below(in, 5)) {
+    case 0:
+        FUZZ_CALL(opx_octree_clear_region, tree, (nulls & 1) ? NULL : lo, (nulls & 2) ? NULL : hi, to);
+        break;
+    case 1: {
+        opx_shape shapes[3];
+        const size_t count = take_edit_shapes(in, resolution, shapes);
+        for (size_t i = 0; to == OPX_CELL_FREE && i < count; ++i)
+            if (!(shapes[i].radius <= 8.0 * resolution)) shapes[i].radius = shapes[i].length = shapes[i].size[0] = -1.0;
+        opx_pose pose;
+        take_pose(in, &pose);
+        for (int axis = 0; axis < 3; ++axis) pose.position[axis] = lo[axis];
+        FUZZ_CALL(opx_octree_clear_shapes, tree, (nulls & 1) ? NULL : shapes, count, (nulls & 2) ? NULL : &pose,
+                  to);
+        break;
+    }
+    case 2: {
+        static const double amounts[] = {0.0, 0.1, 0.4, 2.0, -0.1, INFINITY};
+        FUZZ_CALL(opx_octree_decay, tree, take_bool(in) ? amounts[take_below(in, 6)] : take_double(in));
+        break;
+    }
+    case 3:
+        FUZZ_CALL(opx_octree_crop, tree, (nulls & 1) ? NULL : lo, (nulls & 2) ? NULL : hi);
+        break;
+    default: {
+        double xyz[12];
+        for (int i = 0; i < 12; ++i) xyz[i] = (double)(int8_t)take_u8(in) / 8.0 * resolution;
+        opx_insert_options options = OPX_INSERT_OPTIONS_INIT;
+        take_insert_options(in, &options, resolution);
+        options.use_bounds = take_bool(in) ? 1u : take_u32(in);
+        for (int axis = 0; axis < 3; ++axis) {
+            options.bounds_min[axis] = lo[axis];
+            options.bounds_max[axis] = hi[axis];
+        }
+        FUZZ_CALL(opx_octree_insert_points, tree, xyz, 4, 0, OPX_SCALAR_FLOAT64, &options, NULL);
+        break;
+    }
+    }
+}

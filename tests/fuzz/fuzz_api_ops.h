@@ -37,6 +37,7 @@ enum fuzz_api_op {
     OP_QUERY_BATCH,
     OP_QUERY_SPHERE_DISTANCE,
     OP_QUERY_TRAJECTORY_COST,
+    OP_OCTREE_EDIT,
     OP_COUNT
 };
 

@@ -178,6 +178,7 @@ void write_api_seeds(const char *out_dir) {
          OP_QUERY_SPHERE_DISTANCE, OP_QUERY_SPHERES},
         {LOAD_SPHERE_ROBOT, OP_QUERY_TRAJECTORY_COST, OP_OCTREE_EXERCISE, OP_QUERY_TRAJECTORY_COST, OP_ROBOT_JOINTS,
          OP_QUERY_TRAJECTORY_COST},
+        {OP_OCTREE_EDIT, OP_QUERY_COLLIDE, OP_OCTREE_EDIT, OP_QUERY_DISTANCE, OP_OCTREE_EDIT, OP_OCTREE_EXERCISE},
     };
     const size_t tails = sizeof tail_ops / sizeof tail_ops[0];
     for (size_t s = 0; s < 2 * tails; ++s) {

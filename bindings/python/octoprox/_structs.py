@@ -43,11 +43,15 @@ class InsertOptions(Struct):
     it); self-filtering (Octree.insert_points' robot keywords): robot (the
     address of the robot's opx_linkset; None: no filtering),
     robot_padding (metres added to every link's padding for the filter,
-    0), clear_robot_volume (cells inside the robot become free; False)."""
+    0), clear_robot_volume (cells inside the robot become free; False);
+    use_bounds (only the cells of the box bounds_min..bounds_max, map
+    frame, change; False)."""
     _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("sensor_pose", Pose),
                 ("max_range", c_double), ("max_threads", c_uint32), ("reserved0", c_uint32),
                 ("robot", c_void_p), ("robot_padding", c_double),
-                ("clear_robot_volume", c_uint32), ("reserved1", c_uint32)]
+                ("clear_robot_volume", c_uint32), ("reserved1", c_uint32),
+                ("use_bounds", c_uint32), ("reserved2", c_uint32),
+                ("bounds_min", D3), ("bounds_max", D3)]
 
 
 class InsertReport(Struct):
@@ -226,7 +230,7 @@ VERSIONED = {
 }
 
 # Flags read as bool, codes as IntEnum members (written back as ints).
-typed_fields(InsertOptions, mode=converter(InsertMode), clear_robot_volume=bool)
+typed_fields(InsertOptions, mode=converter(InsertMode), clear_robot_volume=bool, use_bounds=bool)
 typed_fields(CellInfo, cell_class=converter(CellClass))
 typed_fields(OctreeStats, has_occupied=bool)
 typed_fields(Shape, kind=converter(ShapeKind))

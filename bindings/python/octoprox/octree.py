@@ -11,18 +11,18 @@ from __future__ import annotations
 
 import ctypes
 import os
-from typing import Dict, Optional
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _structs as s
 from ._arrays import LEAF_DTYPE, depth_view, needed_count, point_view, read_array
-from ._enums import CellMask, FileFormat, InsertMode
+from ._enums import CellClass, CellMask, FileFormat, InsertMode
 from ._handle import Handle, api
-from ._library import init_struct, lib
+from ._library import init_struct, lib, make_pose
 from ._structs import CellInfo, InsertReport, OctreeOptions, OctreeStats
 from ._types import ArrayLike, FileFormatLike, InsertModeLike, PathLike, PoseLike, Vector3
-from .linkset import LinkSet
+from .linkset import LinkSet, _shape_struct
 
 MASK_FREE, MASK_UNCERTAIN, MASK_OCCUPIED = CellMask.FREE, CellMask.UNCERTAIN, CellMask.OCCUPIED
 MASK_ALL_KNOWN = CellMask.ALL_KNOWN
@@ -58,7 +58,39 @@ def _robot_address(robot, where):
     return robot._address
 
 
-def _insert_options(sensor_pose, mode, max_range, max_threads, self_filter, where):
+def _corner(value, where, argument):
+    """A box corner (x, y, z) as the C calls take it."""
+    try:
+        values = [float(v) for v in value]
+    except (TypeError, ValueError):
+        raise TypeError(f"{where}: {argument} must be 3 numbers (x, y, z), got {value!r}") from None
+    if len(values) != 3:
+        raise ValueError(f"{where}: {argument} must be 3 numbers (x, y, z), got {len(values)}")
+    return (ctypes.c_double * 3)(*values)
+
+
+def _clear_target(to, where):
+    """OPX_CELL_FREE or OPX_CELL_UNKNOWN from "free", "unknown" or a CellClass."""
+    target = CellClass.parse(to, where, "to")
+    if target not in (CellClass.FREE, CellClass.UNKNOWN):
+        raise ValueError(f'{where}: to must be "free" or "unknown", got {to!r}')
+    return int(target)
+
+
+def _bounds_fields(bounds, where):
+    """The InsertOptions fields of the bounds keyword: (box_min, box_max)."""
+    if bounds is None:
+        return {}
+    try:
+        box_min, box_max = bounds
+    except (TypeError, ValueError):
+        raise TypeError(f"{where}: bounds must be (box_min, box_max), two corners (x, y, z), "
+                        f"got {bounds!r}") from None
+    return dict(use_bounds=True, bounds_min=tuple(_corner(box_min, where, "bounds[0]")),
+                bounds_max=tuple(_corner(box_max, where, "bounds[1]")))
+
+
+def _insert_options(sensor_pose, mode, max_range, max_threads, self_filter, where, bounds=None):
     """The InsertOptions of an insert; self_filter is (robot, robot_padding,
     clear_robot_volume).  The library checks the padding's range and the
     robot's poses."""
@@ -70,7 +102,8 @@ def _insert_options(sensor_pose, mode, max_range, max_threads, self_filter, wher
                         f"got {robot_padding!r}") from None
     fields = dict(mode=InsertMode.parse(mode, where, "mode"), max_range=max_range,
                   max_threads=max_threads, robot=_robot_address(robot, where),
-                  robot_padding=robot_padding, clear_robot_volume=bool(clear_robot_volume))
+                  robot_padding=robot_padding, clear_robot_volume=bool(clear_robot_volume),
+                  **_bounds_fields(bounds, where))
     if sensor_pose is not None:
         fields["sensor_pose"] = sensor_pose
     return init_struct(s.InsertOptions, **fields)
@@ -178,8 +211,8 @@ class Octree(Handle):
     def insert_points(self, points: ArrayLike, sensor_pose: Optional[PoseLike] = None, *,
                       mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
                       max_threads: int = 1, robot: Optional[LinkSet] = None,
-                      robot_padding: float = 0.0,
-                      clear_robot_volume: bool = False) -> InsertReport:
+                      robot_padding: float = 0.0, clear_robot_volume: bool = False,
+                      bounds: Optional[Tuple[Vector3, Vector3]] = None) -> InsertReport:
         """Inserts one sensor frame; successive frames accumulate.
 
         points: (N, 3) or wider, in the SENSOR frame, metres; float32 or
@@ -206,6 +239,10 @@ class Octree(Handle):
         clear_robot_volume: True sets the cells lying entirely inside the
           robot's unpadded solids free in the same update (an obstacle
           where the arm now stands, its own earlier image); needs robot.
+        bounds: (box_min, box_max), a box in the map frame: only its cells
+          change (the frame's updates of other cells are dropped; a ray
+          from outside still carves the cells it crosses inside).  Cells
+          as clear_region takes them.  None: the whole map.
 
         Returns the InsertReport (points used, non-finite, out of range,
         outside the map, on the robot, shadowed; cells hit, missed and
@@ -214,7 +251,8 @@ class Octree(Handle):
         whose poses were never set) the map is unchanged.
         """
         opts = _insert_options(sensor_pose, mode, max_range, max_threads,
-                               (robot, robot_padding, clear_robot_volume), "Octree.insert_points")
+                               (robot, robot_padding, clear_robot_volume), "Octree.insert_points",
+                               bounds)
         view = point_view(points, "Octree.insert_points")
         report = init_struct(s.InsertReport)
         # robot, an argument, holds the link set (and its handle) for the call.
@@ -227,8 +265,8 @@ class Octree(Handle):
                            sensor_pose: Optional[PoseLike] = None, *,
                            mode: InsertModeLike = InsertMode.RAYCAST, max_range: float = -1.0,
                            max_threads: int = 1, robot: Optional[LinkSet] = None,
-                           robot_padding: float = 0.0,
-                           clear_robot_volume: bool = False) -> InsertReport:
+                           robot_padding: float = 0.0, clear_robot_volume: bool = False,
+                           bounds: Optional[Tuple[Vector3, Vector3]] = None) -> InsertReport:
         """Inserts one depth frame, as insert_points inserts its points.
 
         depth: a 2-D array (rows, columns), read in place when it is uint16
@@ -245,12 +283,12 @@ class Octree(Handle):
         frame (z forward, x right, y down); sensor_pose places that frame
         in the map frame.  mode, max_range (along the ray), max_threads and
         self-filtering (robot, robot_padding in metres,
-        clear_robot_volume) as insert_points.  Pixels without a return are
-        counted in the report's pixels_no_return.
+        clear_robot_volume) and bounds as insert_points.  Pixels without a
+        return are counted in the report's pixels_no_return.
         """
         where = "Octree.insert_depth_image"
         opts = _insert_options(sensor_pose, mode, max_range, max_threads,
-                               (robot, robot_padding, clear_robot_volume), where)
+                               (robot, robot_padding, clear_robot_volume), where, bounds)
         camera = _camera(intrinsics)
         view = depth_view(depth, where)
         image = init_struct(s.DepthImage, data=view.address, width=view.width,
@@ -259,6 +297,55 @@ class Octree(Handle):
         report = init_struct(s.InsertReport)
         lib.opx_octree_insert_depth_image(self, image, camera, opts, report)
         return report
+
+    @api("Octree.clear_region")
+    def clear_region(self, box_min: Vector3, box_max: Vector3, to: Union[CellClass, str] = "unknown") -> None:
+        """Clears every cell of the box [box_min, box_max] (map frame,
+        metres; a corner may be infinite) to "unknown" (removed from the
+        map) or "free" (the free clamp, unknown cells included).  The box
+        covers the cells holding a point of it, as classify finds them: a
+        face on a cell face takes the cell above it too (at 0.1 m, x from
+        0.2 to 0.5 covers the cells from [0.2, 0.3) to [0.5, 0.6)).  A NaN
+        corner or box_min above box_max raises InvalidArgumentError and
+        changes nothing."""
+        where = "Octree.clear_region"
+        lib.opx_octree_clear_region(self, _corner(box_min, where, "box_min"),
+                                    _corner(box_max, where, "box_max"), _clear_target(to, where))
+
+    @api("Octree.clear_shapes")
+    def clear_shapes(self, shapes: Sequence[Any], pose: Optional[PoseLike] = None,
+                     to: Union[CellClass, str] = "unknown") -> None:
+        """Clears the cells an object occupies to "unknown" or "free" (as
+        clear_region): shapes are descriptions as LinkSet.attach_object
+        takes them (mappings or objects with kind, pose in the OBJECT
+        frame, radius, length, size, vertices, triangles; World.shape and
+        LinkSet.attached_shape give them), pose the object frame in the map
+        frame (default identity).  A cell is cleared when a shape touches
+        it, as a collision query decides it, so afterwards (to "unknown")
+        the shapes collide with no cell.  Use it when an object joins the
+        world (its sensed image would count it twice)."""
+        where = "Octree.clear_shapes"
+        keep: list = []
+        structs = [_shape_struct(spec, where, keep) for spec in shapes]
+        array = (s.Shape * max(1, len(structs)))(*structs)
+        lib.opx_octree_clear_shapes(self, array, len(structs),
+                                    None if pose is None else make_pose(pose), _clear_target(to, where))
+
+    @api("Octree.decay")
+    def decay(self, amount: float) -> None:
+        """Moves every known cell's log-odds toward 0 by amount (>= 0),
+        never across it; a cell that reaches 0 becomes unknown.  Called
+        once a frame, obstacles that left the view fade.  NaN or a negative
+        amount raises InvalidArgumentError and changes nothing."""
+        lib.opx_octree_decay(self, float(amount))
+
+    @api("Octree.crop")
+    def crop(self, box_min: Vector3, box_max: Vector3) -> None:
+        """Removes every cell outside the box [box_min, box_max] (map
+        frame; cells as clear_region takes them) and gives their memory
+        back: a mobile base keeps a window around itself."""
+        where = "Octree.crop"
+        lib.opx_octree_crop(self, _corner(box_min, where, "box_min"), _corner(box_max, where, "box_max"))
 
     @api("Octree.classify")
     def classify(self, point: Vector3) -> CellInfo:

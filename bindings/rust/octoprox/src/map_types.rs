@@ -138,6 +138,12 @@ pub struct InsertOptions<'a> {
     /// in the same update (counted in [`InsertReport::cells_cleared`]).
     /// Needs `robot` (else an invalid argument).  Default false.
     pub clear_robot_volume: bool,
+    /// `Some((box_min, box_max))`: only the cells of this box (map frame;
+    /// cells as [`crate::Octree::clear_region`] takes them) change; a ray
+    /// from outside still carves the cells it crosses inside.  A NaN or
+    /// inverted box is an invalid argument.  `None` (the default): the
+    /// whole map.
+    pub bounds: Option<([f64; 3], [f64; 3])>,
 }
 
 impl Default for InsertOptions<'_> {
@@ -151,6 +157,7 @@ impl Default for InsertOptions<'_> {
             robot: None,
             robot_padding: c.robot_padding,
             clear_robot_volume: c.clear_robot_volume != 0,
+            bounds: None,
         }
     }
 }
@@ -166,8 +173,8 @@ impl PartialEq for InsertOptions<'_> {
         same_robot
             && (self.mode, self.sensor_pose, self.max_range, self.max_threads)
                 == (other.mode, other.sensor_pose, other.max_range, other.max_threads)
-            && (self.robot_padding, self.clear_robot_volume)
-                == (other.robot_padding, other.clear_robot_volume)
+            && (self.robot_padding, self.clear_robot_volume, self.bounds)
+                == (other.robot_padding, other.clear_robot_volume, other.bounds)
     }
 }
 
@@ -183,6 +190,9 @@ impl InsertOptions<'_> {
             robot: self.robot.map_or(std::ptr::null_mut(), |r| r.as_raw() as *mut _),
             robot_padding: self.robot_padding,
             clear_robot_volume: u32::from(self.clear_robot_volume),
+            use_bounds: u32::from(self.bounds.is_some()),
+            bounds_min: self.bounds.map_or([0.0; 3], |b| b.0),
+            bounds_max: self.bounds.map_or([0.0; 3], |b| b.1),
             ..Default::default()
         }
     }

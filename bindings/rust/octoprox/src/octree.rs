@@ -17,8 +17,9 @@
 //! # Ok::<(), octoprox::Error>(())
 //! ```
 use crate::error::{check, to_c_string, Result};
-use crate::{check_version, sys, CameraIntrinsics, CellClasses, CellInfo, DepthImage,
-            InsertOptions, InsertReport, Leaf, MapFormat, OctreeOptions, OctreeStats, Points};
+use crate::{check_version, sys, CameraIntrinsics, CellClass, CellClasses, CellInfo, DepthImage,
+            InsertOptions, InsertReport, Leaf, MapFormat, OctreeOptions, OctreeStats, Points, Pose,
+            Shape};
 use std::path::Path;
 use std::ptr;
 
@@ -103,6 +104,49 @@ impl Octree {
     pub fn clear(&mut self) -> Result<()> {
         // SAFETY: exclusive access to a live handle.
         check(unsafe { sys::opx_octree_clear(self.raw) })
+    }
+
+    /// Clears every cell of the box `[box_min, box_max]` (map frame,
+    /// metres; a corner may be infinite) to `to`: [`CellClass::Unknown`]
+    /// removes it, [`CellClass::Free`] sets it to the free clamp (unknown
+    /// cells too).  The box covers the cells holding a point of it, as
+    /// [`Octree::classify`] finds them: a face on a cell face takes the
+    /// cell above it too.  A NaN corner, `box_min` above `box_max` or
+    /// another class is an invalid argument; the map is then unchanged.
+    pub fn clear_region(&mut self, box_min: [f64; 3], box_max: [f64; 3], to: CellClass) -> Result<()> {
+        // SAFETY: the corners are 3 doubles each; exclusive access.
+        check(unsafe { sys::opx_octree_clear_region(self.raw, box_min.as_ptr(), box_max.as_ptr(), to.raw()) })
+    }
+
+    /// Clears the cells an object occupies to `to` (as
+    /// [`Octree::clear_region`]): `shapes` at their poses in the OBJECT
+    /// frame, the object at `pose` in the map frame (a world object's
+    /// shapes and pose, or an attached object's).  A cell is cleared when a
+    /// shape touches it as a collision query decides it, so afterwards (to
+    /// unknown) the shapes collide with no cell of the map.
+    pub fn clear_shapes(&mut self, shapes: &[Shape<'_>], pose: &Pose, to: CellClass) -> Result<()> {
+        // The C shapes borrow the vertices of `shapes`, which outlive the call.
+        let shapes: Vec<sys::opx_shape> = shapes.iter().map(|shape| shape.to_c()).collect();
+        let data = if shapes.is_empty() { ptr::null() } else { shapes.as_ptr() };
+        // SAFETY: every pointer is valid for the call; exclusive access.
+        check(unsafe { sys::opx_octree_clear_shapes(self.raw, data, shapes.len(), pose, to.raw()) })
+    }
+
+    /// Moves every known cell's log-odds toward 0 by `amount` (`>= 0`),
+    /// never across it; a cell that reaches 0 becomes unknown.  Called once
+    /// a frame, obstacles that left the view fade.  NaN or a negative
+    /// amount is an invalid argument.
+    pub fn decay(&mut self, amount: f64) -> Result<()> {
+        // SAFETY: exclusive access to a live handle.
+        check(unsafe { sys::opx_octree_decay(self.raw, amount) })
+    }
+
+    /// Removes every cell outside the box `[box_min, box_max]` (map frame;
+    /// cells as [`Octree::clear_region`] takes them) and gives their memory
+    /// back: a mobile base keeps a window around itself.
+    pub fn crop(&mut self, box_min: [f64; 3], box_max: [f64; 3]) -> Result<()> {
+        // SAFETY: the corners are 3 doubles each; exclusive access.
+        check(unsafe { sys::opx_octree_crop(self.raw, box_min.as_ptr(), box_max.as_ptr()) })
     }
 
     /// The octree's options (a loaded map's resolution included).
