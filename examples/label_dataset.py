@@ -26,11 +26,11 @@ configuration): scene, configuration, collided, self_collided, distance; a
 --check-serial labels everything again in this process and fails unless
 the cluster's labels are the same bit for bit.
 
-Exit status: 0 done, 1 the serial check failed, 77 dask.distributed is not
-installed (Debian: python3-distributed).
+Exit status: 0 done, 1 the serial check failed, 2 bad arguments (or a
+.parquet name without pyarrow), 77 dask.distributed is not installed
+(Debian: python3-distributed).
 """
 import argparse
-import os
 import sys
 import time
 
@@ -142,10 +142,12 @@ def label_cluster(client, maps, robot, q, chunk, progress):
     map_futures = client.scatter(maps, broadcast=True)
     robot_future = client.scatter(robot, broadcast=True)
     spans = chunks(len(q), chunk)
-    scene_tasks = {(i, a): client.submit(label_scene, tree, robot_future, q[a:b], pure=False)
-                   for i, tree in enumerate(map_futures) for a, b in spans}
-    self_tasks = {a: client.submit(label_self, robot_future, q[a:b], pure=False)
-                  for a, b in spans}
+    # Each chunk of rows travels once, not once per scene.
+    rows = dict(zip((a for a, _ in spans), client.scatter([q[a:b] for a, b in spans])))
+    scene_tasks = {(i, a): client.submit(label_scene, tree, robot_future, rows[a], pure=False)
+                   for i, tree in enumerate(map_futures) for a, _ in spans}
+    self_tasks = {a: client.submit(label_self, robot_future, rows[a], pure=False)
+                  for a, _ in spans}
     every = list(scene_tasks.values()) + list(self_tasks.values())
     if progress:
         from distributed import progress as progress_bar
@@ -160,17 +162,21 @@ def same_bits(a, b):
     return all(a[c].dtype == b[c].dtype and a[c].tobytes() == b[c].tobytes() for c in COLUMNS)
 
 
-def write(rows, path):
-    if path.endswith(".parquet"):
-        try:
-            import pyarrow
-            import pyarrow.parquet
-        except ImportError:
-            sys.exit(f"label_dataset: {path}: writing Parquet needs pyarrow (python3-pyarrow); "
-                     "give a .npz name instead")
-        pyarrow.parquet.write_table(pyarrow.table({c: rows[c] for c in COLUMNS}), path)
-    else:
-        np.savez(path, **rows)
+def writer(path):
+    """A function writing the rows to path: Parquet for a .parquet name,
+    else .npz; exits (status 2) before any work when a .parquet name
+    finds no pyarrow."""
+    if not path.endswith(".parquet"):
+        return lambda rows: np.savez(path, **rows)
+    try:
+        import pyarrow
+        import pyarrow.parquet
+    except ImportError:
+        print(f"label_dataset: {path}: writing Parquet needs pyarrow; "
+              "give a .npz name instead", file=sys.stderr)
+        sys.exit(2)
+    return lambda rows: pyarrow.parquet.write_table(
+        pyarrow.table({c: rows[c] for c in COLUMNS}), path)
 
 
 def parse():
@@ -191,7 +197,13 @@ def parse():
     parser.add_argument("--no-progress", action="store_true")
     parser.add_argument("--check-serial", action="store_true",
                         help="label again in this process and compare bit for bit")
-    return parser.parse_args()
+    args = parser.parse_args()
+    for name in ("configurations", "chunk", "workers"):
+        if getattr(args, name) < 1:
+            parser.error(f"--{name} must be at least 1")
+    if args.scenes < 0 or args.scenes + len(args.map) < 1:
+        parser.error("no scene: give --scenes 1 or more, or a --map")
+    return args
 
 
 def main():
@@ -202,6 +214,7 @@ def main():
         print("label_dataset: skipped: dask.distributed is not installed "
               "(Debian: python3-distributed; scripts/setup installs it)")
         return 77
+    write = writer(args.out) if args.out else None
     maps = [generated_map(args.seed * 1000 + i) for i in range(args.scenes)]
     maps += [octoprox.Octree.load(path) for path in args.map]
     # l1's cylinder overlaps l0's at every angle: the pair an SRDF would
@@ -229,8 +242,8 @@ def main():
           f"in {seconds:.2f} s: {pairs / seconds:.0f} (scene, configuration) pairs/s; "
           f"{int(rows['collided'].sum())} collided, {int(rows['self_collided'].sum()) // max(len(maps), 1)} "
           f"configurations self-collided")
-    if args.out:
-        write(rows, args.out)
+    if write:
+        write(rows)
         print(f"wrote {args.out}")
     if args.check_serial:
         start = time.perf_counter()
