@@ -38,6 +38,9 @@ MeshFace face_of(const std::vector<Vec3> &vertices, const std::array<uint32_t, 3
     face.area2 = cross.norm();
     if (face.area2 > 0.0) face.normal = cross / face.area2;
     face.offset = face.normal.dot(face.v[0]);
+    const Vec3 lo = face.v[0].cwiseMin(face.v[1]).cwiseMin(face.v[2]), hi = face.v[0].cwiseMax(face.v[1]).cwiseMax(face.v[2]);
+    face.centre = 0.5 * (lo + hi);
+    for (const Vec3 &v : face.v) face.reach = std::max(face.reach, (v - face.centre).norm());
     return face;
 }
 

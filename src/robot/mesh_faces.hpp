@@ -25,6 +25,8 @@ struct MeshFace {
     Vec3 normal = Vec3::Zero();  // unit, either side; zero for a degenerate triangle
     double offset = 0.0;       // normal . v[0]
     double area2 = 0.0;        // |(v1 - v0) x (v2 - v0)|
+    Vec3 centre = Vec3::Zero();  // of the vertices' box
+    double reach = 0.0;          // from centre to the farthest vertex
     uint8_t edges = 0;         // bit k: this face tests the edge v[k] -> v[(k + 1) % 3]
     uint8_t vertices = 0;      // bit k: this face tests the ball around v[k]
 };

@@ -76,6 +76,20 @@ void face_hits(const Vec3 v[3], double radius, const Vec3 &origin, const Vec3 &d
 
 double face_entry(const MeshFace &face, double radius, const Vec3 &origin, const Vec3 &dir, double t_max) {
     FirstHit hit{t_max};
+    // Everything the face tests lies in the ball around its vertices grown
+    // by the radius: a ray that passes the ball by, or reaches it only
+    // after t_max, meets none of it.
+    {
+        const Vec3 m = origin - face.centre;
+        const double ball = face.reach + radius, a = dir.squaredNorm(), b = m.dot(dir), c = m.squaredNorm() - ball * ball;
+        if (c > 0.0) {
+            const double discriminant = b * b - a * c;
+            if (b >= 0.0 || discriminant < 0.0) return -1.0;
+            // The ball's entry -b/a - sqrt(discriminant)/a beyond t_max, without the root.
+            const double beyond = -b - t_max * a;
+            if (beyond > 0.0 && beyond * beyond > discriminant) return -1.0;
+        }
+    }
     if (face.area2 > 0.0) {
         const double height = face.normal.dot(origin) - face.offset, speed = face.normal.dot(dir);
         // From outside its grown slab, which holds all this face tests, the
