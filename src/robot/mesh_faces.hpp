@@ -43,7 +43,7 @@ struct FaceNode {
     bool is_leaf() const { return left < 0; }
 };
 
-constexpr uint32_t kFacesPerLeaf = 8;
+constexpr uint32_t kFacesPerLeaf = 4;
 
 struct MeshFaces {
     std::vector<MeshFace> faces;  // in the tree's leaf order
