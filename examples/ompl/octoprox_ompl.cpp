@@ -64,6 +64,7 @@ bool SceneQuery::motion(const ompl::base::State *a, const ompl::base::State *b, 
     fill(b, row_b_);
     opx_motion_request request = OPX_MOTION_REQUEST_INIT;
     request.resolution = scene_.resolution;
+    if (scene_.certified) request.check = OPX_MOTION_CERTIFIED;
     request.self_collision = scene_.self_collision ? 1 : 0;
     request.unknown_policy = scene_.unknown_policy;
     request.joint_order = OPX_JOINTS_MODEL;

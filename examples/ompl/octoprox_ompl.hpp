@@ -9,7 +9,9 @@
 // (opx_query_check_configurations, one row).  A motion is valid when every
 // configuration on its straight joint-space line, at most `resolution`
 // apart in every joint, is (opx_query_check_motion: the ends first, then
-// ever finer midpoints, stopping at the first collision).
+// ever finer midpoints, stopping at the first collision); with `certified`,
+// when no configuration anywhere on the line collides
+// (OPX_MOTION_CERTIFIED: no obstacle is missed between samples).
 //
 // Both classes are safe to call from several planner threads: each keeps
 // one opx_query (an engine with its scratch memory) behind a mutex, so
@@ -47,6 +49,9 @@ struct CheckScene {
     // The largest joint step between two configurations a motion checks
     // (radians or metres).
     double resolution = 0.01;
+    // Motions checked whole (OPX_MOTION_CERTIFIED) instead of sampled at
+    // `resolution`: slower, and no thin obstacle between samples is missed.
+    bool certified = false;
     int32_t unknown_policy = OPX_UNKNOWN_FREE;  // OPX_UNKNOWN_OCCUPIED: unseen space blocks
 };
 

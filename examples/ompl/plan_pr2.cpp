@@ -4,7 +4,7 @@
 // validator (octoprox_ompl.hpp); the path is simplified, printed, and
 // checked again densely by other calls (dense_check.hpp).
 //
-//   opx-ompl-plan [--data DIR] [--budget SECONDS] [--seed N] [--resolution M]
+//   opx-ompl-plan [--data DIR] [--budget SECONDS] [--seed N] [--resolution M] [--certified]
 //
 // Exit status: 0 planned and checked; 1 no plan within the budget or the
 // dense check found a collision; 2 usage; 77 the shared data is absent.
@@ -43,11 +43,12 @@ struct Options {
     double budget = 5.0;       // seconds for planning (simplifying gets at most as much)
     unsigned long seed = 1;
     double resolution = 0.02;  // the map's, metres
+    bool certified = false;    // motions checked whole, not sampled
 };
 
 int usage(const char *why) {
     std::fprintf(stderr, "opx-ompl-plan: %s\nusage: opx-ompl-plan [--data DIR] [--budget SECONDS] [--seed N] "
-                         "[--resolution METRES]\n", why);
+                         "[--resolution METRES] [--certified]\n", why);
     return 2;
 }
 
@@ -57,6 +58,10 @@ int parse(int argc, char **argv, Options &o) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--help") return usage("plans the PR2's right arm with OMPL over OctoProx");
+        if (arg == "--certified") {
+            o.certified = true;
+            continue;
+        }
         if (i + 1 >= argc) return usage(("missing value after " + arg).c_str());
         const char *value = argv[++i];
         if (arg == "--data") o.data_dir = value;
@@ -147,7 +152,10 @@ struct PlanFigures {
 
 void print_plan(const Options &o, og::SimpleSetup &setup, const opx_ompl::CheckScene &check, const PlanFigures &f,
                 const opx_ompl::CheckCounts &counts, const std::vector<std::vector<double>> &rows) {
-    std::printf("planner: RRTConnect, seed %lu, motions checked every %.3f rad\n", o.seed, check.resolution);
+    if (check.certified)
+        std::printf("planner: RRTConnect, seed %lu, motions certified (checked whole)\n", o.seed);
+    else
+        std::printf("planner: RRTConnect, seed %lu, motions checked every %.3f rad\n", o.seed, check.resolution);
     std::printf("planning time: %.1f ms; %llu configurations checked (%llu states, %llu in %llu motions)\n", f.ms,
                 (unsigned long long)(f.states + f.motion_configurations), (unsigned long long)f.states,
                 (unsigned long long)f.motion_configurations, (unsigned long long)f.motions);
@@ -165,6 +173,7 @@ int main(int argc, char **argv) {
     ompl::RNG::setSeed(o.seed);
     opx_ompl::Pr2Scene scene;
     if (const int status = opx_ompl::load_pr2_scene(o.data_dir, o.resolution, scene)) return status;
+    scene.check.certified = o.certified;
     std::printf("OctoProx %s with OMPL %d.%d.%d: the PR2's right arm, a real RGB-D frame at %g cm (%llu occupied "
                 "cells), 2 world objects, self-collision with pr2.srdf\n",
                 opx_version(), OMPL_MAJOR_VERSION, OMPL_MINOR_VERSION, OMPL_PATCH_VERSION, o.resolution * 100.0,
