@@ -7,20 +7,6 @@
 namespace octoprox {
 namespace {
 
-double squared_to(const Vec3 &at, const Aabb &box) {
-    const Vec3 gap = (box.lo - at).cwiseMax(at - box.hi).cwiseMax(0.0);
-    return gap.squaredNorm();
-}
-
-void offer(NearestPiece &best, const Vec3 &at, const Aabb &box) {
-    const double squared = squared_to(at, box);
-    if (!(squared < best.squared)) return;
-    best.found = true;
-    best.squared = squared;
-    best.point = at.cwiseMax(box.lo).cwiseMin(box.hi);
-    best.box = box;
-}
-
 // The keys [lo, lo + width) as a box, its faces as cell_box places them.
 Aabb key_box(const int32_t lo[3], int32_t width, double resolution) {
     Aabb box;
@@ -126,7 +112,7 @@ public:
         }
         if (winner < 0) return;
         const int32_t key[3] = {lo[0] + (winner & 3), lo[1] + ((winner >> 2) & 3), lo[2] + (winner >> 4)};
-        offer(best, at_, key_box(key, 1, resolution_));
+        best.offer(at_, key_box(key, 1, resolution_));
     }
 
     const ObstacleGrid &grid() const { return grid_; }
@@ -190,14 +176,14 @@ NearestPiece grid_nearest_free(const ObstacleGrid &grid, double resolution, cons
         for (int side = 0; side < 2; ++side) {
             Aabb face{at, at};
             face.lo[axis] = face.hi[axis] = side == 0 ? whole.lo[axis] : whole.hi[axis];
-            offer(best, at, face);
+            best.offer(at, face);
         }
     Rings rings(grid, resolution, at);
     if (!rings.locate()) return best;  // not reached: the centre is in a cell of the grid
     rings.visit(
         0, INT32_MAX - 1, best, [](uint64_t word) { return ~word != 0; },
         [&](uint64_t word, const int32_t lo_key[3], NearestPiece &near) {
-            if (word == 0) offer(near, at, key_box(lo_key, 4, resolution));
+            if (word == 0) near.offer(at, key_box(lo_key, 4, resolution));
             else rings.offer_cells(~word, lo_key, near);
         });
     return best;

@@ -6,22 +6,6 @@
 namespace octoprox {
 namespace {
 
-double squared_to(const Vec3 &at, const Aabb &box) {
-    const Vec3 gap = (box.lo - at).cwiseMax(at - box.hi).cwiseMax(0.0);
-    return gap.squaredNorm();
-}
-
-// The piece replaces the best when strictly nearer: the first of
-// equidistant pieces stays.
-void offer(NearestPiece &best, const Vec3 &at, const Aabb &box) {
-    const double squared = squared_to(at, box);
-    if (!(squared < best.squared)) return;
-    best.found = true;
-    best.squared = squared;
-    best.point = at.cwiseMax(box.lo).cwiseMin(box.hi);
-    best.box = box;
-}
-
 struct Child {
     double squared;
     OctreeCell cell;
@@ -61,7 +45,7 @@ public:
     // Recursion depth is bounded by kTreeDepth.
     void visit(const OctreeCell &cell, NearestPiece &best) const {
         if (cell.node == nullptr || !view_.has_children(cell.node)) {
-            if (obstacle_leaf(cell.node)) offer(best, at_, leaf_obstacle_box(view_, cell.node, cell.box, settings_));
+            if (obstacle_leaf(cell.node)) best.offer(at_, leaf_obstacle_box(view_, cell.node, cell.box, settings_));
             return;
         }
         Child near[8];
@@ -97,19 +81,19 @@ public:
     void visit(const OctreeCell &cell, NearestPiece &best) const {
         const OctreeView::NodeRef node = cell.node;
         if (node == nullptr) {
-            if (!settings_.unknown_occupied) offer(best, at_, cell.box);
+            if (!settings_.unknown_occupied) best.offer(at_, cell.box);
             return;
         }
         const bool below = view_.log_odds(node) < settings_.threshold_log_odds;
         if (!view_.has_children(node)) {
-            if (below) offer(best, at_, cell.box);
+            if (below) best.offer(at_, cell.box);
             else if (settings_.point_extents) offer_outside_extent(cell, best);
             return;
         }
         // An inner node's log-odds is its children's maximum: below the
         // threshold, its whole cube is free (unknown parts too, when free).
         if (below && !settings_.unknown_occupied) {
-            offer(best, at_, cell.box);
+            best.offer(at_, cell.box);
             return;
         }
         Child near[8];
@@ -128,12 +112,12 @@ private:
             if (box.lo[axis] > cell.box.lo[axis]) {
                 Aabb slab = cell.box;
                 slab.hi[axis] = box.lo[axis];
-                offer(best, at_, slab);
+                best.offer(at_, slab);
             }
             if (box.hi[axis] < cell.box.hi[axis]) {
                 Aabb slab = cell.box;
                 slab.lo[axis] = box.hi[axis];
-                offer(best, at_, slab);
+                best.offer(at_, slab);
             }
         }
     }
@@ -187,7 +171,7 @@ NearestPiece nearest_free(const OctreeView &view, const Vec3 &at, const SphereSe
             const double face = side == 0 ? cube.lo[axis] : cube.hi[axis];
             Aabb outside{at, at};
             outside.lo[axis] = outside.hi[axis] = face;
-            offer(best, at, outside);
+            best.offer(at, outside);
         }
     FreeSearch(view, at, settings).visit(root, best);
     return best;

@@ -23,11 +23,28 @@
 
 namespace octoprox {
 
+// The squared distance from `at` to the closed box.
+inline double squared_to(const Vec3 &at, const Aabb &box) {
+    const Vec3 gap = (box.lo - at).cwiseMax(at - box.hi).cwiseMax(0.0);
+    return gap.squaredNorm();
+}
+
 struct NearestPiece {
     bool found = false;
     double squared = std::numeric_limits<double>::infinity();  // from the point to `point`
     Vec3 point = Vec3::Zero();  // the nearest point of `box`
     Aabb box;                   // the obstacle box, or the free piece, holding it
+
+    // Takes `box` when its nearest point to `at` is strictly nearer: the
+    // first of equidistant pieces stays.
+    void offer(const Vec3 &at, const Aabb &piece) {
+        const double to_piece = squared_to(at, piece);
+        if (!(to_piece < squared)) return;
+        found = true;
+        squared = to_piece;
+        point = at.cwiseMax(piece.lo).cwiseMin(piece.hi);
+        box = piece;
+    }
 };
 
 // The nearest obstacle point strictly nearer than sqrt(bound_squared)
