@@ -13,6 +13,8 @@ file(MAKE_DIRECTORY ${BINARY_DIR})
 run_step(asan_c_tests "configure ${BINARY_DIR}"
   ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=Debug
+    "-DCMAKE_C_FLAGS_DEBUG=-g -O1"
+    "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1"
     -DCMAKE_C_COMPILER=${C_COMPILER}
     -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
     -DOPX_SANITIZE=ON
@@ -27,4 +29,4 @@ run_step(asan_c_tests "build ${TARGETS}" ${CMAKE_COMMAND} --build ${BINARY_DIR} 
 set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0:strict_string_checks=1")
 set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1")
 run_step(asan_c_tests "ctest -R ^c_"
-  ${CTEST_COMMAND} -R "^c_" --output-on-failure --timeout 600)
+  ${CTEST_COMMAND} -R "^c_" -j2 --output-on-failure --timeout 600)
