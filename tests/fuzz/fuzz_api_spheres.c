@@ -38,6 +38,27 @@ static void take_row(fuzz_input *in, const occupied_targets *targets, double row
 
 /* Whether a link set of one sphere (radius, centre) touches the map as
  * opx_query_collide says; -1 when a call refuses. */
+/* Sphere rows (x, y, z, radius), mostly ones the calls accept: one or
+ * more, packed, near the map's occupied cells; `step` is the bytes from
+ * one row to the next.  The caller frees them. */
+static double *take_sphere_rows(fuzz_input *in, const opx_octree *tree, size_t *count, size_t *stride,
+                                size_t *step) {
+    const uint8_t many = take_u8(in);
+    *count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
+    *stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
+    *step = *stride == 0 ? 4 * sizeof(double) : *stride;
+    occupied_targets targets;
+    find_occupied_targets(tree, &targets);
+    double *rows = calloc(array_bytes(*count, *stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
+    FUZZ_REQUIRE(rows != NULL);
+    for (size_t i = 0; i < *count && *step >= 4 * sizeof(double); ++i) {
+        double row[4];
+        take_row(in, &targets, row);
+        memcpy((char *)rows + i * *step, row, sizeof row);
+    }
+    return rows;
+}
+
 static int one_sphere_collides(opx_query *query, const opx_octree *tree, const double row[4],
                                const opx_sphere_request *request) {
     opx_linkset *links = NULL;
@@ -64,20 +85,8 @@ void op_query_spheres(fuzz_api *api) {
     opx_sphere_request request = OPX_SPHERE_REQUEST_INIT;
     take_sphere_request(in, &request);
     const int with_request = take_u8(in) < 240;
-    /* Mostly rows the call accepts: one or more, packed. */
-    const uint8_t many = take_u8(in);
-    const size_t count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
-    const size_t stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
-    const size_t step = stride == 0 ? 4 * sizeof(double) : stride;
-    occupied_targets targets;
-    find_occupied_targets(tree, &targets);
-    double *rows = calloc(array_bytes(count, stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
-    FUZZ_REQUIRE(rows != NULL);
-    for (size_t i = 0; i < count && step >= 4 * sizeof(double); ++i) {
-        double row[4];
-        take_row(in, &targets, row);
-        memcpy((char *)rows + i * step, row, sizeof row);
-    }
+    size_t count, stride, step;
+    double *rows = take_sphere_rows(in, tree, &count, &stride, &step);
     uint8_t collided[MAX_SPHERES + 1];
     const size_t capacity = take_u8(in) < 240 ? count : take_below(in, MAX_SPHERES + 1);
     const opx_status status = FUZZ_CALL(opx_query_collide_spheres, query, tree, take_u8(in) < 250 ? rows : NULL,
@@ -113,19 +122,8 @@ void op_query_sphere_distance(fuzz_api *api) {
     opx_sphere_distance_request request = OPX_SPHERE_DISTANCE_REQUEST_INIT;
     opx_sphere_request as_check = OPX_SPHERE_REQUEST_INIT;
     take_sphere_distance_request(in, &request, &as_check);
-    const uint8_t many = take_u8(in);
-    const size_t count = many < 160 ? 1 + many % 3 : many < 240 ? 1 + take_below(in, MAX_SPHERES) : 0;
-    const size_t stride = take_u8(in) < 192 ? 0 : take_stride(in, 4 * sizeof(double));
-    const size_t step = stride == 0 ? 4 * sizeof(double) : stride;
-    occupied_targets targets;
-    find_occupied_targets(tree, &targets);
-    double *rows = calloc(array_bytes(count, stride, 4 * sizeof(double)) / sizeof(double) + 4, sizeof(double));
-    FUZZ_REQUIRE(rows != NULL);
-    for (size_t i = 0; i < count && step >= 4 * sizeof(double); ++i) {
-        double row[4];
-        take_row(in, &targets, row);
-        memcpy((char *)rows + i * step, row, sizeof row);
-    }
+    size_t count, stride, step;
+    double *rows = take_sphere_rows(in, tree, &count, &stride, &step);
     double distance[MAX_SPHERES + 1], gradient[3 * (MAX_SPHERES + 1)];
     const size_t capacity = take_u8(in) < 240 ? count : take_below(in, MAX_SPHERES + 1);
     const int with_gradient = take_u8(in) < 200;
